@@ -1,0 +1,33 @@
+//! Cameras: where each pixel's rays come from.
+
+mod screen;
+
+pub use screen::ScreenCamera;
+
+use crate::float::Float;
+use crate::ray::Ray;
+
+/// Maps continuous pixel coordinates to primary rays.
+///
+/// Pixel `(i, j)` (column `i` from the left, row `j` from the top) has its centre at
+/// coordinates `(i, j)`; a jittered sample is at `(i + δx, j + δy)`, `δ ∈ [−½, ½)`.
+pub trait Camera<F: Float> {
+    /// The image width in pixels.
+    fn width(&self) -> usize;
+    /// The image height in pixels.
+    fn height(&self) -> usize;
+    /// The primary ray through the point `(x, y)` in pixel coordinates.
+    fn ray(&self, x: F, y: F) -> Ray<F>;
+}
+
+impl<F: Float, C: Camera<F> + ?Sized> Camera<F> for &C {
+    fn width(&self) -> usize {
+        (**self).width()
+    }
+    fn height(&self) -> usize {
+        (**self).height()
+    }
+    fn ray(&self, x: F, y: F) -> Ray<F> {
+        (**self).ray(x, y)
+    }
+}

@@ -1,0 +1,151 @@
+//! The scalar every geometric type and the renderer are generic over.
+//!
+//! [`Float`] is [`num_traits::Float`] plus the few things a ray tracer needs that
+//! `num-traits` lacks: a way to write constants once ([`lit`]), the neighbouring
+//! representable values ([`Float::next_up`], [`Float::next_down`]) for error-bounded
+//! ray offsets, and pbrt's `γ(n)` rounding-error bound. It is implemented for
+//! `f32`, `f64` and [`twofloat::TwoFloat`] (double-double, about 106 bits), so the
+//! same renderer produces fast previews and reference images.
+
+use std::fmt::{Debug, Display};
+
+/// A floating-point scalar the renderer can run on.
+///
+/// Implemented for `f32`, `f64` and [`twofloat::TwoFloat`].
+pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + 'static {
+    /// A short name for reports: `"f32"`, `"f64"`, `"dd"`.
+    const NAME: &'static str;
+
+    /// Converts an `f64` literal or random draw to this scalar, rounding to nearest.
+    ///
+    /// Every constant in the crate is written through this one function (or [`lit`]),
+    /// so no `F::from(..).unwrap()` is scattered through the code.
+    fn from_f64(x: f64) -> Self;
+
+    /// This value rounded to the nearest `f64` (exact for `f32` and `f64`).
+    fn to_f64(self) -> f64;
+
+    /// The smallest representable value greater than `self` (identity for NaN and +∞).
+    fn next_up(self) -> Self;
+
+    /// The largest representable value less than `self` (identity for NaN and −∞).
+    fn next_down(self) -> Self;
+
+    /// pbrt's bound on the relative error of `n` successive roundings:
+    /// `γ(n) = n·u / (1 − n·u)` with the unit roundoff `u = ε/2`.
+    ///
+    /// # Precision
+    /// For `n·u < 1` the product of `n` factors `(1 ± u)` lies within `1 ± γ(n)`
+    /// (Higham, *Accuracy and Stability of Numerical Algorithms*, lemma 3.1).
+    #[inline]
+    fn gamma(n: u32) -> Self {
+        let nu = Self::from_f64(f64::from(n)) * Self::epsilon() * Self::from_f64(0.5);
+        nu / (Self::one() - nu)
+    }
+}
+
+/// Writes a constant in any [`Float`]: `lit::<F>(0.5)`.
+#[inline]
+pub fn lit<F: Float>(x: f64) -> F {
+    F::from_f64(x)
+}
+
+impl Float for f32 {
+    const NAME: &'static str = "f32";
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        x as f32
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+    #[inline]
+    fn next_up(self) -> Self {
+        f32::next_up(self)
+    }
+    #[inline]
+    fn next_down(self) -> Self {
+        f32::next_down(self)
+    }
+}
+
+impl Float for f64 {
+    const NAME: &'static str = "f64";
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self
+    }
+    #[inline]
+    fn next_up(self) -> Self {
+        f64::next_up(self)
+    }
+    #[inline]
+    fn next_down(self) -> Self {
+        f64::next_down(self)
+    }
+}
+
+impl Float for twofloat::TwoFloat {
+    const NAME: &'static str = "dd";
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        twofloat::TwoFloat::from(x)
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self.hi() + self.lo()
+    }
+    /// Steps by one unit in the last place of the double-double (`|x|·ε`, at
+    /// least the smallest positive `f64`); enough for ray offsets, which only
+    /// need a value strictly on the far side.
+    fn next_up(self) -> Self {
+        let step =
+            (self.abs() * <Self as num_traits::Float>::epsilon()).max(Self::from_f64(f64::from_bits(1)));
+        self + step
+    }
+    fn next_down(self) -> Self {
+        let step =
+            (self.abs() * <Self as num_traits::Float>::epsilon()).max(Self::from_f64(f64::from_bits(1)));
+        self - step
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use twofloat::TwoFloat;
+
+    fn check_neighbours<F: Float>() {
+        for x in [lit::<F>(1.0), lit(-3.5), lit(1e-3), lit(0.0)] {
+            assert!(x.next_up() > x, "{}: next_up({x})", F::NAME);
+            assert!(x.next_down() < x, "{}: next_down({x})", F::NAME);
+        }
+    }
+
+    #[test]
+    fn next_up_and_down_move_strictly() {
+        check_neighbours::<f32>();
+        check_neighbours::<f64>();
+        check_neighbours::<TwoFloat>();
+    }
+
+    #[test]
+    fn gamma_matches_its_definition() {
+        let u = f64::EPSILON / 2.0;
+        assert_eq!(f64::gamma(3), 3.0 * u / (1.0 - 3.0 * u));
+        assert!(f32::gamma(5) > 5.0 * f32::EPSILON / 2.0);
+        assert!(TwoFloat::gamma(5).to_f64() < 1e-30);
+    }
+
+    #[test]
+    fn literals_round_to_nearest() {
+        assert_eq!(lit::<f32>(0.1), 0.1f32);
+        assert_eq!(lit::<f64>(0.1), 0.1f64);
+        assert_eq!(lit::<TwoFloat>(0.1).to_f64(), 0.1);
+    }
+}

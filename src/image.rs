@@ -1,0 +1,119 @@
+//! Images: the linear RGB buffer a render produces, its 16-bit encoding, and the
+//! PPM and PNG files it is written to.
+
+mod atomic;
+mod encoding;
+mod png;
+mod ppm;
+
+pub use atomic::write_atomic;
+pub use encoding::Encoding;
+pub use png::write_png;
+pub use ppm::{parse_ppm, read_ppm, write_ppm, write_ppm_to};
+
+use crate::error::{Error, Result};
+
+/// The largest image accepted, in pixels (2²⁸: a 16384×16384 render, 6 GiB as `f64`).
+pub const MAX_PIXELS: usize = 1 << 28;
+
+/// Checks that `width × height` is a possible image: both at least 1, at most
+/// [`MAX_PIXELS`] pixels in all.
+pub fn check_size(width: usize, height: usize) -> Result<()> {
+    match width.checked_mul(height) {
+        Some(n) if width > 0 && height > 0 && n <= MAX_PIXELS => Ok(()),
+        _ => Err(Error::InvalidSettings(format!(
+            "image size {width}×{height} must be at least 1×1 and at most {MAX_PIXELS} pixels"
+        ))),
+    }
+}
+
+/// A linear RGB image: what the renderer computes, one `[r, g, b]` per pixel, row by row
+/// from the top-left.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    width: usize,
+    height: usize,
+    pixels: Vec<[f64; 3]>,
+}
+
+impl Image {
+    /// A black image.
+    pub fn new(width: usize, height: usize) -> Result<Self> {
+        check_size(width, height)?;
+        Ok(Self {
+            width,
+            height,
+            pixels: vec![[0.0; 3]; width * height],
+        })
+    }
+
+    /// An image from its pixels, row by row; `None` if the count is not `width × height`.
+    pub fn from_pixels(width: usize, height: usize, pixels: Vec<[f64; 3]>) -> Option<Self> {
+        (check_size(width, height).is_ok() && pixels.len() == width * height).then_some(Self {
+            width,
+            height,
+            pixels,
+        })
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> usize {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> usize {
+        self.height
+    }
+
+    /// The pixels, row by row from the top-left.
+    pub fn pixels(&self) -> &[[f64; 3]] {
+        &self.pixels
+    }
+
+    /// The pixels, mutably.
+    pub fn pixels_mut(&mut self) -> &mut [[f64; 3]] {
+        &mut self.pixels
+    }
+
+    /// Pixel `(x, y)`, `x` from the left, `y` from the top.
+    ///
+    /// # Panics
+    /// If the pixel lies outside the image.
+    pub fn pixel(&self, x: usize, y: usize) -> [f64; 3] {
+        assert!(
+            x < self.width && y < self.height,
+            "pixel ({x}, {y}) outside {}×{}",
+            self.width,
+            self.height
+        );
+        self.pixels[y * self.width + x]
+    }
+
+    /// The 16-bit samples of this image under `encoding` (see [`Encoding::quantize`]).
+    pub fn to_u16(&self, encoding: Encoding) -> Image16 {
+        Image16 {
+            width: self.width,
+            height: self.height,
+            max_value: u16::MAX,
+            samples: self
+                .pixels
+                .iter()
+                .flat_map(|p| p.map(|c| encoding.quantize(c)))
+                .collect(),
+        }
+    }
+}
+
+/// Integer RGB samples as stored in a PPM or PNG file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Image16 {
+    /// Width in pixels.
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// The largest sample value (`65535` for the spec's files).
+    pub max_value: u16,
+    /// `3 × width × height` samples, `R G B` per pixel, row by row from the top-left.
+    pub samples: Vec<u16>,
+}

@@ -1,0 +1,70 @@
+//! A small, generic, compile-time-dispatched ray tracer.
+//!
+//! It renders exactly what the specification asks — the eye at the origin, a 4×2 screen
+//! at distance 1 measured between the outermost pixel centres, mirror and matte spheres,
+//! recursion to `max_depth`, a 16-bit plain PPM — and is generic over the scalar
+//! ([`Float`]: `f32`, `f64`, double-double) and over the random generator.
+//!
+//! The spec's abstract object and material are the traits [`Hittable`] and
+//! [`Material`]. A scene can hold them as trait objects ([`DynScene`], the spec's
+//! "vector of smart pointers") or as the enums [`ShapeKind`] and [`MaterialKind`]
+//! ([`EnumScene`], dispatched by `match`); both go through the same renderer and give
+//! the same bytes.
+//!
+//! ```
+//! use raytrace::prelude::*;
+//!
+//! let mut scene = EnumScene::<f64>::new(Background::default());
+//! scene.add(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 1.0)?, Mirror::new(Vec3::new(0.9, 0.6, 0.3))?);
+//! scene.add(Sphere::new(Vec3::new(0.0, -101.0, -3.0), 100.0)?, Lambertian::new(Vec3::splat(0.5))?);
+//! let camera = ScreenCamera::new(80, 40)?;
+//! let settings = RenderSettings::new(4, 10, 42)?;
+//! let render = render(&scene, &camera, &settings)?;
+//! let samples = render.image.to_u16(Encoding::Srgb);
+//! # let dir = std::env::temp_dir();
+//! write_ppm(&dir.join("doc_example.ppm"), &samples)?;
+//! # Ok::<(), raytrace::Error>(())
+//! ```
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod background;
+pub mod camera;
+pub mod cli;
+pub mod error;
+pub mod float;
+pub mod image;
+pub mod light;
+pub mod material;
+pub mod optics;
+pub mod ray;
+pub mod render;
+pub mod sampling;
+pub mod scene;
+pub mod shape;
+mod validate;
+pub mod vec3;
+
+pub use background::Background;
+pub use camera::{Camera, ScreenCamera};
+pub use error::{Error, Result};
+pub use float::{Float, lit};
+pub use image::{Encoding, Image, Image16};
+pub use light::PointLight;
+pub use material::{Lambertian, Material, MaterialKind, Mirror, Scatter};
+pub use ray::Ray;
+pub use render::{DefaultRng, Render, RenderSettings, RenderStats, render, render_tile, render_with};
+pub use scene::{DynScene, EnumScene, Object, Scene};
+pub use shape::{Hit, Hittable, ShapeKind, Sphere};
+pub use vec3::{Color, Vec3};
+
+/// Everything needed to build and render a scene.
+pub mod prelude {
+    pub use crate::image::{read_ppm, write_png, write_ppm};
+    pub use crate::{
+        Background, Camera, Color, DynScene, Encoding, EnumScene, Error, Float, Hittable, Lambertian,
+        Material, MaterialKind, Mirror, PointLight, Ray, RenderSettings, Scene, ScreenCamera, ShapeKind,
+        Sphere, Vec3, lit, render, render_tile, render_with,
+    };
+}

@@ -1,0 +1,94 @@
+//! The spec's abstract material: the [`Material`] trait, the [`Scatter`] it returns,
+//! and [`MaterialKind`], the enum fast path over the concrete materials.
+
+mod lambertian;
+mod mirror;
+
+pub use lambertian::Lambertian;
+pub use mirror::Mirror;
+
+use crate::float::Float;
+use crate::ray::Ray;
+use crate::shape::Hit;
+use crate::vec3::{Color, Vec3};
+use rand::Rng;
+use std::sync::Arc;
+
+/// What a hit does to a ray: absorbs part of its colour and sends it on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scatter<F> {
+    /// The albedo `A` applied to the continuing ray's colour: `C⁺ = A ∘ C⁻`.
+    pub attenuation: Color<F>,
+    /// The continuing ray's unit direction `D⁺`.
+    pub direction: Vec3<F>,
+}
+
+/// How a surface changes a ray that hits it: the specification's abstract material.
+///
+/// Generic over the scalar `F` and the random generator `R`; `R` is a parameter of the
+/// trait (not of the method) so `dyn Material<F, R>` is a valid trait object.
+pub trait Material<F: Float, R: Rng + ?Sized> {
+    /// The scattered ray's direction and attenuation, or `None` if the ray is absorbed.
+    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>>;
+
+    /// For an ideal diffuse (Lambertian) surface, its albedo `A`: the renderer then adds
+    /// direct light from point lights with the BRDF `A/π`. `None` for other surfaces.
+    #[inline]
+    fn diffuse_albedo(&self) -> Option<Color<F>> {
+        None
+    }
+}
+
+macro_rules! forward_material {
+    ($($ptr:ty),*) => {$(
+        impl<F: Float, R: Rng + ?Sized, T: Material<F, R> + ?Sized> Material<F, R> for $ptr {
+            #[inline]
+            fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
+                (**self).scatter(ray, hit, rng)
+            }
+            #[inline]
+            fn diffuse_albedo(&self) -> Option<Color<F>> {
+                (**self).diffuse_albedo()
+            }
+        }
+    )*};
+}
+forward_material!(&T, Box<T>, Arc<T>);
+
+/// The enum fast path: every concrete material, dispatched by `match`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MaterialKind<F> {
+    /// A [`Mirror`].
+    Mirror(Mirror<F>),
+    /// A matte [`Lambertian`] surface.
+    Lambertian(Lambertian<F>),
+}
+
+impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
+    #[inline]
+    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
+        match self {
+            Self::Mirror(m) => Material::<F, R>::scatter(m, ray, hit, rng),
+            Self::Lambertian(m) => m.scatter(ray, hit, rng),
+        }
+    }
+    #[inline]
+    fn diffuse_albedo(&self) -> Option<Color<F>> {
+        match self {
+            Self::Mirror(m) => Material::<F, R>::diffuse_albedo(m),
+            Self::Lambertian(m) => Material::<F, R>::diffuse_albedo(m),
+        }
+    }
+}
+
+impl<F> From<Mirror<F>> for MaterialKind<F> {
+    fn from(m: Mirror<F>) -> Self {
+        Self::Mirror(m)
+    }
+}
+
+impl<F> From<Lambertian<F>> for MaterialKind<F> {
+    fn from(m: Lambertian<F>) -> Self {
+        Self::Lambertian(m)
+    }
+}

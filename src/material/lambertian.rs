@@ -1,0 +1,48 @@
+//! An ideal matte (Lambertian) surface.
+
+use super::{Material, Scatter};
+use crate::error::Result;
+use crate::float::Float;
+use crate::ray::Ray;
+use crate::sampling::lambertian_direction;
+use crate::shape::Hit;
+use crate::validate;
+use crate::vec3::Color;
+use rand::Rng;
+
+/// A matte surface: one scattered ray with density `cos θ/π`, drawn by the
+/// specification's tangent-sphere method ([`lambertian_direction`]), colour absorbed by
+/// the albedo, `C⁺ = A ∘ C⁻`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lambertian<F> {
+    albedo: Color<F>,
+}
+
+impl<F: Float> Lambertian<F> {
+    /// A matte surface with albedo `A`; each channel must lie in `[0, 1]`.
+    pub fn new(albedo: Color<F>) -> Result<Self> {
+        Ok(Self {
+            albedo: validate::albedo("matte albedo", albedo)?,
+        })
+    }
+
+    /// The albedo `A`.
+    pub fn albedo(&self) -> Color<F> {
+        self.albedo
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> Material<F, R> for Lambertian<F> {
+    #[inline]
+    fn scatter(&self, _ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
+        Some(Scatter {
+            attenuation: self.albedo,
+            direction: lambertian_direction(hit.normal, rng),
+        })
+    }
+
+    #[inline]
+    fn diffuse_albedo(&self) -> Option<Color<F>> {
+        Some(self.albedo)
+    }
+}

@@ -1,0 +1,133 @@
+//! Pure functions of geometric optics: reflection, refraction, Fresnel reflectance.
+//!
+//! No randomness and no scene types: the property tests target these directly.
+//! Conventions: `d` is the incident unit direction (pointing *towards* the surface),
+//! `n` the unit normal on the side `d` comes from (`d·n ≤ 0`).
+
+use crate::float::{Float, lit};
+use crate::vec3::Vec3;
+
+/// Mirror reflection `r = d − 2(d·n)n`.
+///
+/// `n` must be unit length; `d` may have any length and `|r| = |d|`.
+/// The formula is exactly symmetric in the sign of `n` and exactly homogeneous
+/// under scaling `d` by a power of two (both are tested bit for bit).
+#[inline]
+pub fn reflect<F: Float>(d: Vec3<F>, n: Vec3<F>) -> Vec3<F> {
+    d - n * (lit::<F>(2.0) * d.dot(n))
+}
+
+/// Refraction by Snell's law `η₁ sin θ₁ = η₂ sin θ₂`, with `eta = η₁/η₂`.
+///
+/// `d` and `n` must be unit length with `d·n ≤ 0`. Returns the unit refracted
+/// direction, or `None` for total internal reflection (`η sin θ₁ ≥ 1`):
+///
+/// `cos θ₂ = √(1 − η²(1 − cos²θ₁))`, `t = η d + (η cos θ₁ − cos θ₂) n`.
+///
+/// # Precision
+/// `cos θ₁` is clamped to `[0, 1]` so a normal whose squared length rounds above 1
+/// cannot produce a negative radicand or NaN at normal incidence.
+#[inline]
+pub fn refract<F: Float>(d: Vec3<F>, n: Vec3<F>, eta: F) -> Option<Vec3<F>> {
+    let cos_i = (-d.dot(n)).max(F::zero()).min(F::one());
+    let sin2_t = eta * eta * (F::one() - cos_i * cos_i);
+    if sin2_t >= F::one() {
+        return None;
+    }
+    let cos_t = (F::one() - sin2_t).sqrt();
+    Some(d * eta + n * (eta * cos_i - cos_t))
+}
+
+/// Schlick's approximation of the Fresnel reflectance:
+/// `R(θ) = R₀ + (1 − R₀)(1 − cos θ)⁵`, `R₀ = ((1 − η)/(1 + η))²`, `η = η₁/η₂`.
+///
+/// `cos_theta` is the cosine of the angle on the *incident* side. When light goes
+/// from the denser medium (`η > 1`) Schlick's formula must be evaluated with the
+/// transmitted angle; [`schlick_reflectance`] does that and handles total internal
+/// reflection, so renderers should call it rather than this raw formula.
+#[inline]
+pub fn schlick<F: Float>(cos_theta: F, eta: F) -> F {
+    let r0 = (F::one() - eta) / (F::one() + eta);
+    let r0 = r0 * r0;
+    let m = (F::one() - cos_theta).max(F::zero()).min(F::one());
+    let m2 = m * m;
+    r0 + (F::one() - r0) * m2 * m2 * m
+}
+
+/// Reflectance of an interface by Schlick's approximation, for incidence `cos θ₁`
+/// (clamped to `[0, 1]`) and `η = η₁/η₂`: 1 under total internal reflection,
+/// otherwise [`schlick`] at the larger of the two angles (the one in the rarer
+/// medium), which keeps the approximation symmetric and in `[0, 1]`.
+#[inline]
+pub fn schlick_reflectance<F: Float>(cos_i: F, eta: F) -> F {
+    let cos_i = cos_i.max(F::zero()).min(F::one());
+    let sin2_t = eta * eta * (F::one() - cos_i * cos_i);
+    if sin2_t >= F::one() {
+        return F::one();
+    }
+    let cos = if eta > F::one() {
+        (F::one() - sin2_t).sqrt()
+    } else {
+        cos_i
+    };
+    schlick(cos, eta)
+}
+
+/// The exact Fresnel reflectance of unpolarised light at a dielectric interface,
+/// the mean of the s and p reflectances:
+///
+/// `r_s = (η₁cos θ₁ − η₂cos θ₂)/(η₁cos θ₁ + η₂cos θ₂)`,
+/// `r_p = (η₂cos θ₁ − η₁cos θ₂)/(η₂cos θ₁ + η₁cos θ₂)`, `R = (r_s² + r_p²)/2`,
+///
+/// written with `η = η₁/η₂`. Returns 1 under total internal reflection.
+#[inline]
+pub fn fresnel<F: Float>(cos_i: F, eta: F) -> F {
+    let cos_i = cos_i.max(F::zero()).min(F::one());
+    let sin2_t = eta * eta * (F::one() - cos_i * cos_i);
+    if sin2_t >= F::one() {
+        return F::one();
+    }
+    let cos_t = (F::one() - sin2_t).sqrt();
+    let rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    let rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    (rs * rs + rp * rp) * lit(0.5)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reflect_flips_the_normal_component() {
+        let d = Vec3::new(1.0, -1.0, 0.0);
+        let n = Vec3::new(0.0, 1.0, 0.0);
+        assert_eq!(reflect(d, n), Vec3::new(1.0, 1.0, 0.0));
+    }
+
+    #[test]
+    fn refract_straight_through_at_normal_incidence() {
+        let d = Vec3::new(0.0, 0.0, -1.0);
+        let n = Vec3::new(0.0, 0.0, 1.0);
+        assert_eq!(refract(d, n, 1.0 / 1.5), Some(d));
+    }
+
+    #[test]
+    fn total_internal_reflection_past_the_critical_angle() {
+        let eta = 1.5f64;
+        let crit = (1.0 / eta).asin();
+        let n = Vec3::new(0.0, 1.0, 0.0);
+        let at = |theta: f64| Vec3::new(theta.sin(), -theta.cos(), 0.0);
+        assert!(refract(at(crit - 1e-6), n, eta).is_some());
+        assert!(refract(at(crit + 1e-6), n, eta).is_none());
+        assert_eq!(schlick_reflectance(at(crit + 1e-6).dot(n).abs(), eta), 1.0);
+        assert_eq!(fresnel(at(crit + 1e-6).dot(n).abs(), eta), 1.0);
+    }
+
+    #[test]
+    fn normal_incidence_reflectance() {
+        let r0 = ((1.0f64 - 1.5) / (1.0 + 1.5)).powi(2);
+        assert!((fresnel(1.0, 1.0 / 1.5) - r0).abs() < 1e-15);
+        assert!((schlick_reflectance(1.0, 1.0 / 1.5) - r0).abs() < 1e-15);
+        assert!((fresnel(1.0, 1.5) - r0).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,143 @@
+//! The spec's abstract object: the [`Hittable`] trait, the [`Hit`] it reports, and
+//! [`ShapeKind`], the enum fast path over the concrete shapes.
+
+mod sphere;
+
+pub use sphere::{Sphere, textbook_sphere_hit};
+
+use crate::float::Float;
+use crate::ray::Ray;
+use crate::vec3::Vec3;
+use std::sync::Arc;
+
+/// Where a ray meets a surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit<F> {
+    /// The ray parameter of the hit, in `(0, t_max)`.
+    pub t: F,
+    /// The hit point.
+    pub point: Vec3<F>,
+    /// A bound on the absolute rounding error of each component of `point`
+    /// (pbrt-v4's error-bounded intersection), used to offset secondary rays.
+    pub error: Vec3<F>,
+    /// The unit surface normal, on the side the ray came from (`normal·D ≤ 0`).
+    pub normal: Vec3<F>,
+    /// Whether the ray hit the side the shape's outward normal points to.
+    pub front_face: bool,
+}
+
+impl<F: Float> Hit<F> {
+    /// A hit whose normal is turned to face the incoming `direction`.
+    #[inline]
+    pub fn new(t: F, point: Vec3<F>, error: Vec3<F>, outward: Vec3<F>, direction: Vec3<F>) -> Self {
+        let front_face = direction.dot(outward) <= F::zero();
+        let normal = if front_face { outward } else { -outward };
+        Self {
+            t,
+            point,
+            error,
+            normal,
+            front_face,
+        }
+    }
+
+    /// A ray leaving the hit point along the unit `direction`, its origin moved off the
+    /// surface just far enough that it cannot hit the same surface again
+    /// ([`offset_ray_origin`]).
+    #[inline]
+    pub fn spawn(&self, direction: Vec3<F>) -> Ray<F> {
+        Ray::new(
+            offset_ray_origin(self.point, self.error, self.normal, direction),
+            direction,
+        )
+    }
+}
+
+/// pbrt-v4's `OffsetRayOrigin`: moves `p` along the normal `n` past the box of its
+/// rounding error `err`, to the side `w` points to, then one more representable value
+/// away, so the new origin lies strictly on that side of the true surface:
+///
+/// `d = |n|·err`, `p' = p ± d·n`, each component of `p'` rounded away from `p`.
+///
+/// This replaces the textbook's fixed `t_min = 0.001`, which is scale-blind: too large
+/// for small objects (rays skip through a tiny glass sphere) and too small far from the
+/// origin (rays re-hit their own surface, "shadow acne").
+#[inline]
+pub fn offset_ray_origin<F: Float>(p: Vec3<F>, err: Vec3<F>, n: Vec3<F>, w: Vec3<F>) -> Vec3<F> {
+    let d = n.abs().dot(err);
+    let offset = if w.dot(n) < F::zero() { -(n * d) } else { n * d };
+    let away = |po: F, o: F| {
+        if o > F::zero() {
+            po.next_up()
+        } else if o < F::zero() {
+            po.next_down()
+        } else {
+            po
+        }
+    };
+    let po = p + offset;
+    Vec3::new(away(po.x, offset.x), away(po.y, offset.y), away(po.z, offset.z))
+}
+
+/// A surface a ray can hit: the specification's abstract object.
+///
+/// Usable as a trait object (`Box<dyn Hittable<F>>`, the spec's vector of pointers)
+/// and implemented by the enum [`ShapeKind`] for compile-time dispatch.
+pub trait Hittable<F: Float> {
+    /// The nearest hit with `t` in the open interval `(0, t_max)`, if any.
+    ///
+    /// The interval is open at 0 and no larger `t_min` is needed: secondary rays start
+    /// at [`offset_ray_origin`], past the surface's rounding error.
+    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>>;
+
+    /// Whether anything blocks the ray before `t_max` (pbrt's `IntersectP`): an
+    /// any-hit query for shadow rays, which may stop at the first occluder.
+    #[inline]
+    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
+        self.hit(ray, t_max).is_some()
+    }
+}
+
+macro_rules! forward_hittable {
+    ($($ptr:ty),*) => {$(
+        impl<F: Float, T: Hittable<F> + ?Sized> Hittable<F> for $ptr {
+            #[inline]
+            fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+                (**self).hit(ray, t_max)
+            }
+            #[inline]
+            fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
+                (**self).occluded(ray, t_max)
+            }
+        }
+    )*};
+}
+forward_hittable!(&T, Box<T>, Arc<T>);
+
+/// The enum fast path: every concrete shape, dispatched by `match` (no vtable, no box).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ShapeKind<F> {
+    /// A [`Sphere`].
+    Sphere(Sphere<F>),
+}
+
+impl<F: Float> Hittable<F> for ShapeKind<F> {
+    #[inline]
+    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+        match self {
+            Self::Sphere(s) => s.hit(ray, t_max),
+        }
+    }
+    #[inline]
+    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
+        match self {
+            Self::Sphere(s) => s.occluded(ray, t_max),
+        }
+    }
+}
+
+impl<F> From<Sphere<F>> for ShapeKind<F> {
+    fn from(s: Sphere<F>) -> Self {
+        Self::Sphere(s)
+    }
+}

@@ -1,0 +1,178 @@
+//! The sphere `|X − C|² = r²`.
+
+use super::{Hit, Hittable};
+use crate::error::Result;
+use crate::float::Float;
+use crate::ray::Ray;
+use crate::validate;
+use crate::vec3::Vec3;
+
+/// A sphere with centre `C` and radius `r > 0`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere<F> {
+    center: Vec3<F>,
+    radius: F,
+}
+
+impl<F: Float> Sphere<F> {
+    /// A sphere; rejects a non-finite centre and a radius that is not finite and `> 0`.
+    pub fn new(center: Vec3<F>, radius: F) -> Result<Self> {
+        Ok(Self {
+            center: validate::finite_vec("sphere centre", center)?,
+            radius: validate::positive("sphere radius", radius)?,
+        })
+    }
+
+    /// The centre `C`.
+    pub fn center(&self) -> Vec3<F> {
+        self.center
+    }
+
+    /// The radius `r`.
+    pub fn radius(&self) -> F {
+        self.radius
+    }
+
+    /// Both roots of `|O + tD − C|² = r²` (unit `D`), nearer first, or `None` if the ray
+    /// misses the sphere's carrier.
+    ///
+    /// With `f = O − C` and `b = f·D` the roots are `t = −b ± √(r² − |f − bD|²)`.
+    /// Two numerical choices make this stable where the textbook form fails (Haines et
+    /// al., *Ray Tracing Gems* ch. 7):
+    /// - the discriminant is `r² − |f − bD|²` (the squared distance from the centre to
+    ///   the ray's line) instead of `b² − (|f|² − r²)`, which cancels catastrophically
+    ///   when `|f| ≫ r` (a small sphere far away);
+    /// - the root of larger magnitude is `q = −b − sign(b)√Δ` (no cancellation) and the
+    ///   other is `c/q` with `c = |f|² − r²` (Vieta), instead of `−b ± √Δ`.
+    #[inline]
+    pub fn roots(&self, ray: &Ray<F>) -> Option<(F, F)> {
+        let f = ray.origin - self.center;
+        let b = f.dot(ray.direction);
+        let l = f - ray.direction * b;
+        let r2 = self.radius * self.radius;
+        let disc = r2 - l.length_squared();
+        if disc < F::zero() {
+            return None;
+        }
+        let sqrt_d = disc.sqrt();
+        let q = if b > F::zero() { -b - sqrt_d } else { -b + sqrt_d };
+        let c = f.length_squared() - r2;
+        let other = if q == F::zero() { F::zero() } else { c / q };
+        Some(if q < other { (q, other) } else { (other, q) })
+    }
+
+    /// The hit at parameter `t`, with the point moved back onto the surface and its
+    /// rounding-error bound.
+    ///
+    /// # Precision
+    /// pbrt-v4 §6.8.5: after reprojection `p ← C + (p − C)·r/|p − C|` each component of
+    /// `p − C` is within `γ(5)` relative of the true surface point; adding `C` back costs
+    /// one more rounding, relative to `|C| + |p − C|`. We bound the error by
+    /// `γ(6)(|C| + |p − C|)` per component.
+    #[inline]
+    fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
+        let local = ray.at(t) - self.center;
+        let local = local * (self.radius / local.length());
+        let point = self.center + local;
+        let error = (self.center.abs() + local.abs()) * F::gamma(6);
+        Hit::new(t, point, error, local / self.radius, ray.direction)
+    }
+}
+
+impl<F: Float> Hittable<F> for Sphere<F> {
+    #[inline]
+    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+        let (t0, t1) = self.roots(ray)?;
+        let t = if t0 > F::zero() { t0 } else { t1 };
+        (t > F::zero() && t < t_max).then(|| self.hit_at(ray, t))
+    }
+}
+
+/// The textbook ray–sphere intersection (*Ray Tracing in One Weekend*), kept for the
+/// benches and the accuracy study: `a = D·D`, `b = 2f·D`, `c = f·f − r²`,
+/// `t = (−b ∓ √(b² − 4ac))/2a`, the first root in `(t_min, t_max)`.
+///
+/// # Precision
+/// `b² − 4ac` subtracts two numbers of size `~|f|²` to get one of size `~r²`: for a
+/// sphere at distance `|f|` the discriminant keeps only `log₂(r²/(ε|f|²))` bits and in
+/// f32 is lost completely from `|f|/r ≈ 3·10³` (garbled from a few hundred). The point
+/// `O + tD` is not reprojected and carries no error bound, which is why the textbook
+/// needs a fixed `t_min`.
+pub fn textbook_sphere_hit<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t_min: F, t_max: F) -> Option<Hit<F>> {
+    let two = F::one() + F::one();
+    let f = ray.origin - s.center;
+    let a = ray.direction.dot(ray.direction);
+    let b = two * f.dot(ray.direction);
+    let c = f.dot(f) - s.radius * s.radius;
+    let disc = b * b - two * two * a * c;
+    if disc < F::zero() {
+        return None;
+    }
+    let sqrt_d = disc.sqrt();
+    let t = [(-b - sqrt_d) / (two * a), (-b + sqrt_d) / (two * a)]
+        .into_iter()
+        .find(|&t| t > t_min && t < t_max)?;
+    let point = ray.at(t);
+    Some(Hit::new(
+        t,
+        point,
+        Vec3::zero(),
+        (point - s.center) / s.radius,
+        ray.direction,
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::float::lit;
+
+    fn unit_sphere_at<F: Float>(z: f64) -> Sphere<F> {
+        Sphere::new(Vec3::from_f64(0.0, 0.0, z), lit(1.0)).unwrap()
+    }
+
+    #[test]
+    fn hits_front_then_back() {
+        let s = unit_sphere_at::<f64>(-5.0);
+        let ray = Ray::new(Vec3::zero(), Vec3::new(0.0, 0.0, -1.0));
+        let h = s.hit(&ray, f64::INFINITY).unwrap();
+        assert_eq!(h.t, 4.0);
+        assert_eq!(h.point, Vec3::new(0.0, 0.0, -4.0));
+        assert_eq!(h.normal, Vec3::new(0.0, 0.0, 1.0));
+        assert!(h.front_face);
+        assert!(s.hit(&ray, 4.0).is_none(), "t_max is exclusive");
+        let inside = Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::new(0.0, 0.0, -1.0));
+        let h = s.hit(&inside, f64::INFINITY).unwrap();
+        assert_eq!(
+            (h.t, h.front_face, h.normal),
+            (1.0, false, Vec3::new(0.0, 0.0, 1.0))
+        );
+    }
+
+    #[test]
+    fn misses_and_behind() {
+        let s = unit_sphere_at::<f32>(-5.0);
+        let up = Ray::new(Vec3::zero(), Vec3::new(0.0, 1.0, 0.0));
+        assert!(s.hit(&up, f32::INFINITY).is_none());
+        let away = Ray::new(Vec3::zero(), Vec3::new(0.0, 0.0, 1.0));
+        assert!(s.hit(&away, f32::INFINITY).is_none());
+    }
+
+    #[test]
+    fn rejects_invalid_values() {
+        assert!(Sphere::new(Vec3::zero(), 0.0f64).is_err());
+        assert!(Sphere::new(Vec3::zero(), -1.0f64).is_err());
+        assert!(Sphere::new(Vec3::zero(), f64::NAN).is_err());
+        assert!(Sphere::new(Vec3::zero(), f64::INFINITY).is_err());
+        assert!(Sphere::new(Vec3::new(f64::NAN, 0.0, 0.0), 1.0).is_err());
+        let msg = Sphere::new(Vec3::zero(), -2.0f32).unwrap_err().to_string();
+        assert!(msg.contains("sphere radius") && msg.contains("-2"), "{msg}");
+    }
+
+    #[test]
+    fn textbook_agrees_on_an_easy_case() {
+        let s = unit_sphere_at::<f64>(-5.0);
+        let ray = Ray::new(Vec3::zero(), Vec3::new(0.0, 0.0, -1.0));
+        assert_eq!(textbook_sphere_hit(&s, &ray, 1e-3, f64::INFINITY).unwrap().t, 4.0);
+    }
+}
