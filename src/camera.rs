@@ -1,7 +1,9 @@
 //! Cameras: where each pixel's rays come from.
 
+mod look_at;
 mod screen;
 
+pub use look_at::LookAtCamera;
 pub use screen::ScreenCamera;
 
 use crate::float::Float;

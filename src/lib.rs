@@ -47,7 +47,7 @@ mod validate;
 pub mod vec3;
 
 pub use background::Background;
-pub use camera::{Camera, ScreenCamera};
+pub use camera::{Camera, LookAtCamera, ScreenCamera};
 pub use error::{Error, Result};
 pub use float::{Float, lit};
 pub use image::{Encoding, Image, Image16};
@@ -64,7 +64,7 @@ pub mod prelude {
     pub use crate::image::{read_ppm, write_png, write_ppm};
     pub use crate::{
         Background, Camera, Color, DynScene, Encoding, EnumScene, Error, Float, Hittable, Lambertian,
-        Material, MaterialKind, Mirror, PointLight, Ray, RenderSettings, Scene, ScreenCamera, ShapeKind,
-        Sphere, Vec3, lit, render, render_tile, render_with,
+        LookAtCamera, Material, MaterialKind, Mirror, PointLight, Ray, RenderSettings, Scene, ScreenCamera,
+        ShapeKind, Sphere, Vec3, lit, render, render_tile, render_with,
     };
 }

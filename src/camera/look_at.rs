@@ -1,0 +1,119 @@
+//! A pinhole camera placed anywhere, looking at a point.
+
+use super::Camera;
+use crate::error::{Error, Result};
+use crate::float::{Float, lit};
+use crate::ray::Ray;
+use crate::validate;
+use crate::vec3::Vec3;
+
+/// A pinhole camera at `from`, looking at `at`, with `up` roughly up and a vertical field
+/// of view `vfov` (degrees). Used for scenes the spec's fixed camera cannot frame, such as
+/// *Ray Tracing in One Weekend*'s final scene.
+///
+/// With the orthonormal frame `w = (from − at)/|from − at|`, `u = up×w/|up×w|`, `v = w×u`
+/// and the viewport `2·tan(vfov/2)` high at distance 1, pixel coordinates `(x, y)` (centre
+/// of pixel `(i, j)` at `(i, j)`, rows from the top) map to the direction
+///
+/// `D ∝ −w + ((x + ½)/nx − ½)·h_w·u + (½ − (y + ½)/ny)·h_h·v`, `h_w = h_h·nx/ny`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LookAtCamera<F> {
+    width: usize,
+    height: usize,
+    origin: Vec3<F>,
+    forward: Vec3<F>,
+    right: Vec3<F>,
+    up: Vec3<F>,
+}
+
+impl<F: Float> LookAtCamera<F> {
+    /// A camera for a `width × height` image.
+    ///
+    /// # Errors
+    /// Non-finite points, `from == at`, `up` parallel to the view direction, `vfov`
+    /// outside `(0°, 180°)`, or an impossible image size.
+    pub fn new(
+        from: Vec3<F>,
+        at: Vec3<F>,
+        up: Vec3<F>,
+        vfov: F,
+        width: usize,
+        height: usize,
+    ) -> Result<Self> {
+        crate::image::check_size(width, height)?;
+        let from = validate::finite_vec("camera position", from)?;
+        let at = validate::finite_vec("camera target", at)?;
+        let w = validate::direction("camera view direction (from − at)", from - at)?;
+        let up = validate::finite_vec("camera up vector", up)?;
+        let u = up.cross(w).try_normalize().ok_or_else(|| {
+            Error::invalid("camera up vector", "must not be parallel to the view direction")
+        })?;
+        let v = w.cross(u);
+        if !(vfov > F::zero() && vfov < lit(180.0)) {
+            return Err(Error::invalid(
+                "camera field of view",
+                format!("must be in (0°, 180°), got {vfov}"),
+            ));
+        }
+        let h = lit::<F>(2.0) * (vfov.to_radians() * lit(0.5)).tan();
+        let aspect = lit::<F>(width as f64) / lit(height as f64);
+        Ok(Self {
+            width,
+            height,
+            origin: from,
+            forward: -w,
+            right: u * (h * aspect),
+            up: v * h,
+        })
+    }
+}
+
+impl<F: Float> Camera<F> for LookAtCamera<F> {
+    fn width(&self) -> usize {
+        self.width
+    }
+    fn height(&self) -> usize {
+        self.height
+    }
+    #[inline]
+    fn ray(&self, x: F, y: F) -> Ray<F> {
+        let half = lit::<F>(0.5);
+        let s = (x + half) / lit(self.width as f64) - half;
+        let t = half - (y + half) / lit(self.height as f64);
+        let d = self.forward + self.right * s + self.up * t;
+        Ray::new(self.origin, d.normalize())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn centre_looks_at_the_target_and_corners_span_the_fov() {
+        let from = Vec3::new(13.0, 2.0, 3.0);
+        let at = Vec3::zero();
+        let cam = LookAtCamera::new(from, at, Vec3::new(0.0, 1.0, 0.0), 20.0f64, 400, 200).unwrap();
+        let centre = cam.ray(199.5, 99.5);
+        assert!((centre.direction - (at - from).normalize()).length() < 1e-12);
+        // The top and bottom edges are vfov apart.
+        let top = cam.ray(199.5, -0.5).direction;
+        let bottom = cam.ray(199.5, 199.5).direction;
+        assert!((top.dot(bottom).acos().to_degrees() - 20.0).abs() < 1e-9);
+        assert!(top.y > bottom.y, "row 0 is the top");
+    }
+
+    #[test]
+    fn rejects_degenerate_setups() {
+        let o = Vec3::<f64>::zero();
+        let y = Vec3::new(0.0, 1.0, 0.0);
+        let z = Vec3::new(0.0, 0.0, -1.0);
+        assert!(LookAtCamera::new(o, o, y, 40.0, 10, 10).is_err());
+        assert!(LookAtCamera::new(o, y, y, 40.0, 10, 10).is_err());
+        assert!(LookAtCamera::new(o, z, y, 0.0, 10, 10).is_err());
+        assert!(LookAtCamera::new(o, z, y, 180.0, 10, 10).is_err());
+        assert!(LookAtCamera::new(o, z, y, f64::NAN, 10, 10).is_err());
+        assert!(LookAtCamera::new(o, z, y, 40.0, 0, 10).is_err());
+        assert!(LookAtCamera::new(o, z, y, 40.0, 10, 10).is_ok());
+    }
+}
