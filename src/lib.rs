@@ -29,7 +29,9 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod aabb;
 pub mod background;
+pub mod bvh;
 pub mod camera;
 pub mod cli;
 pub mod error;
