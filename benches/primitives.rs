@@ -5,7 +5,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use rand::{RngExt, SeedableRng};
 use rand_distr::{Distribution, UnitSphere};
 use raytrace::prelude::*;
-use raytrace::sampling::{lambertian_direction, unit_sphere_rejection};
+use raytrace::sampling::{cosine_direction, lambertian_direction, unit_sphere_rejection};
 use raytrace::shape::{Hit, textbook_sphere_hit};
 use raytrace::{DefaultRng, Material};
 use std::hint::black_box;
@@ -91,6 +91,7 @@ fn samplers(c: &mut Criterion) {
     g.bench_function("lambertian-spec-tangent-sphere", |b| {
         b.iter(|| lambertian_direction(black_box(n), &mut rng))
     });
+    g.bench_function("lambertian-closed-form", |b| b.iter(|| cosine_direction(black_box(n), &mut rng)));
     g.finish();
 }
 

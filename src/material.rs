@@ -4,7 +4,7 @@
 mod lambertian;
 mod mirror;
 
-pub use lambertian::Lambertian;
+pub use lambertian::{CosineSampler, Lambertian};
 pub use mirror::Mirror;
 
 use crate::float::Float;
