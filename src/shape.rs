@@ -1,10 +1,15 @@
 //! The spec's abstract object: the [`Hittable`] trait, the [`Hit`] it reports, and
 //! [`ShapeKind`], the enum fast path over the concrete shapes.
 
+mod plane;
 mod sphere;
+mod triangle;
 
-pub use sphere::{Sphere, textbook_sphere_hit};
+pub use plane::Plane;
+pub use sphere::{Sphere, TEXTBOOK_T_MIN, TextbookSphere, textbook_sphere_hit};
+pub use triangle::Triangle;
 
+use crate::aabb::Aabb;
 use crate::float::Float;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
@@ -96,6 +101,13 @@ pub trait Hittable<F: Float> {
     fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
         self.hit(ray, t_max).is_some()
     }
+
+    /// A box holding the whole shape, or `None` if it is unbounded (a plane) or the
+    /// implementor does not say; only bounded shapes go into a scene's [`Bvh`](crate::bvh::Bvh).
+    #[inline]
+    fn bounds(&self) -> Option<Aabb<F>> {
+        None
+    }
 }
 
 macro_rules! forward_hittable {
@@ -109,6 +121,10 @@ macro_rules! forward_hittable {
             fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
                 (**self).occluded(ray, t_max)
             }
+            #[inline]
+            fn bounds(&self) -> Option<Aabb<F>> {
+                (**self).bounds()
+            }
         }
     )*};
 }
@@ -119,6 +135,12 @@ forward_hittable!(&T, Box<T>, Arc<T>);
 pub enum ShapeKind<F> {
     /// A [`Sphere`].
     Sphere(Sphere<F>),
+    /// An infinite [`Plane`].
+    Plane(Plane<F>),
+    /// A [`Triangle`].
+    Triangle(Triangle<F>),
+    /// A sphere intersected the textbook way ([`TextbookSphere`]), for the accuracy study.
+    TextbookSphere(TextbookSphere<F>),
 }
 
 impl<F: Float> Hittable<F> for ShapeKind<F> {
@@ -126,12 +148,27 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
     fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
         match self {
             Self::Sphere(s) => s.hit(ray, t_max),
+            Self::Plane(p) => p.hit(ray, t_max),
+            Self::Triangle(t) => t.hit(ray, t_max),
+            Self::TextbookSphere(s) => s.hit(ray, t_max),
         }
     }
     #[inline]
     fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
         match self {
             Self::Sphere(s) => s.occluded(ray, t_max),
+            Self::Plane(p) => p.occluded(ray, t_max),
+            Self::Triangle(t) => t.occluded(ray, t_max),
+            Self::TextbookSphere(s) => s.occluded(ray, t_max),
+        }
+    }
+    #[inline]
+    fn bounds(&self) -> Option<Aabb<F>> {
+        match self {
+            Self::Sphere(s) => s.bounds(),
+            Self::Plane(p) => p.bounds(),
+            Self::Triangle(t) => t.bounds(),
+            Self::TextbookSphere(s) => s.bounds(),
         }
     }
 }
@@ -139,5 +176,23 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
 impl<F> From<Sphere<F>> for ShapeKind<F> {
     fn from(s: Sphere<F>) -> Self {
         Self::Sphere(s)
+    }
+}
+
+impl<F> From<Plane<F>> for ShapeKind<F> {
+    fn from(p: Plane<F>) -> Self {
+        Self::Plane(p)
+    }
+}
+
+impl<F> From<Triangle<F>> for ShapeKind<F> {
+    fn from(t: Triangle<F>) -> Self {
+        Self::Triangle(t)
+    }
+}
+
+impl<F> From<TextbookSphere<F>> for ShapeKind<F> {
+    fn from(s: TextbookSphere<F>) -> Self {
+        Self::TextbookSphere(s)
     }
 }

@@ -1,6 +1,7 @@
 //! The sphere `|X − C|² = r²`.
 
 use super::{Hit, Hittable};
+use crate::aabb::Aabb;
 use crate::error::Result;
 use crate::float::Float;
 use crate::ray::Ray;
@@ -66,15 +67,15 @@ impl<F: Float> Sphere<F> {
     ///
     /// # Precision
     /// pbrt-v4 §6.8.5: after reprojection `p ← C + (p − C)·r/|p − C|` each component of
-    /// `p − C` is within `γ(5)` relative of the true surface point; adding `C` back costs
-    /// one more rounding, relative to `|C| + |p − C|`. We bound the error by
-    /// `γ(6)(|C| + |p − C|)` per component.
+    /// the local point `p − C` is within `γ(5)|p − C|` of the true surface point; adding `C`
+    /// back (exact, it is the stored centre) costs one more rounding, at most `γ(1)|p|`. So
+    /// the bound per component is `γ(5)|p − C| + γ(1)|p|`.
     #[inline]
     fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
         let local = ray.at(t) - self.center;
         let local = local * (self.radius / local.length());
         let point = self.center + local;
-        let error = (self.center.abs() + local.abs()) * F::gamma(6);
+        let error = local.abs() * F::gamma(5) + point.abs() * F::gamma(1);
         Hit::new(t, point, error, local / self.radius, ray.direction)
     }
 }
@@ -85,6 +86,13 @@ impl<F: Float> Hittable<F> for Sphere<F> {
         let (t0, t1) = self.roots(ray)?;
         let t = if t0 > F::zero() { t0 } else { t1 };
         (t > F::zero() && t < t_max).then(|| self.hit_at(ray, t))
+    }
+
+    /// `C ± r`, widened by the rounding of the two sums (`γ(1)(|C| + r)`).
+    #[inline]
+    fn bounds(&self) -> Option<Aabb<F>> {
+        let pad = (self.center.abs() + Vec3::splat(self.radius)) * F::gamma(1) + Vec3::splat(self.radius);
+        Some(Aabb::new(self.center - pad, self.center + pad))
     }
 }
 
@@ -120,6 +128,26 @@ pub fn textbook_sphere_hit<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t_min: F, t_ma
         (point - s.center) / s.radius,
         ray.direction,
     ))
+}
+
+/// The textbook's fixed lower bound on `t`, *Ray Tracing in One Weekend*'s `0.001`.
+pub const TEXTBOOK_T_MIN: f64 = 1e-3;
+
+/// A sphere intersected the textbook way ([`textbook_sphere_hit`] with `t_min = 0.001`
+/// and no error bound, so spawned rays start at the rounded hit point): the naive method,
+/// kept as a shape so whole scenes can be rendered with it for the accuracy study.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TextbookSphere<F>(pub Sphere<F>);
+
+impl<F: Float> Hittable<F> for TextbookSphere<F> {
+    #[inline]
+    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+        textbook_sphere_hit(&self.0, ray, crate::float::lit(TEXTBOOK_T_MIN), t_max)
+    }
+    #[inline]
+    fn bounds(&self) -> Option<Aabb<F>> {
+        self.0.bounds()
+    }
 }
 
 #[cfg(test)]

@@ -1,0 +1,377 @@
+//! The triangle `ABC`, intersected watertight (Woop, Benthin and Wald 2013, as in
+//! pbrt-v4's `IntersectTriangle`).
+
+use super::{Hit, Hittable};
+use crate::aabb::Aabb;
+use crate::error::{Error, Result};
+use crate::float::Float;
+use crate::ray::Ray;
+use crate::validate;
+use crate::vec3::Vec3;
+
+/// A triangle with vertices `A`, `B`, `C`, hit from both sides.
+///
+/// Its outward normal is `(B − A)×(C − A)` normalized: the front face is the side from
+/// which `A → B → C` runs counter-clockwise. Triangles sharing an edge or a vertex (a
+/// mesh) are watertight: a ray through a shared edge or vertex hits at least one of
+/// them ([`Triangle::intersect`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Triangle<F> {
+    a: Vec3<F>,
+    b: Vec3<F>,
+    c: Vec3<F>,
+    normal: Vec3<F>,
+}
+
+impl<F: Float> Triangle<F> {
+    /// The triangle `ABC`.
+    ///
+    /// Rejects with [`Error::InvalidValue`] (`what = "triangle"`) non-finite vertices and
+    /// degenerate triangles: those with `|(B − A)×(C − A)| ≤ γ(6)·|B − A|·|C − A|`, that is
+    /// whose angle at `A` has a sine within `γ(6)` of zero (`3.6·10⁻⁷` in f32,
+    /// `6.7·10⁻¹⁶` in f64), which includes collinear and coincident vertices.
+    ///
+    /// # Precision
+    /// The threshold is the rounding error of the cross product: each of its components
+    /// `uⱼvₖ − uₖvⱼ` (with `u = B − A`, `v = C − A` rounded) is within
+    /// `γ(4)·(|uⱼvₖ| + |uₖvⱼ|)`, and the vector of those bounds has length at most
+    /// `√2·γ(4)·|u||v| < γ(6)·|u||v|`. Below it the computed normal's direction is
+    /// rounding noise. A triangle whose `|u×v|²` underflows or overflows in `F` is
+    /// rejected too: its normal cannot be computed.
+    pub fn new(a: Vec3<F>, b: Vec3<F>, c: Vec3<F>) -> Result<Self> {
+        for v in [a, b, c] {
+            validate::finite_vec("triangle", v)?;
+        }
+        let (u, v) = (b - a, c - a);
+        let cross = u.cross(v);
+        let threshold = F::gamma(6) * u.length() * v.length();
+        match cross.try_normalize() {
+            Some(normal) if cross.length() > threshold => Ok(Self { a, b, c, normal }),
+            _ => Err(Error::invalid(
+                "triangle",
+                format!(
+                    "degenerate in {} (|(B − A)×(C − A)| = {:?} ≤ {threshold:?}): {a:?}, {b:?}, {c:?}",
+                    F::NAME,
+                    cross.length()
+                ),
+            )),
+        }
+    }
+
+    /// The vertices `[A, B, C]`.
+    pub fn vertices(&self) -> [Vec3<F>; 3] {
+        [self.a, self.b, self.c]
+    }
+
+    /// The unit outward normal `(B − A)×(C − A) / |(B − A)×(C − A)|`.
+    pub fn normal(&self) -> Vec3<F> {
+        self.normal
+    }
+
+    /// The ray parameter `t ∈ (0, t_max)` of the hit and its barycentric coordinates
+    /// `[b₀, b₁, b₂]` (weights of `A`, `B`, `C`; each `≥ 0`, summing to 1 within
+    /// rounding), or `None`.
+    ///
+    /// The watertight test of Woop, Benthin and Wald (2013), as in pbrt-v4:
+    /// 1. translate the vertices by `−O` and permute the axes cyclically so that the
+    ///    largest `|Dᵢ|` becomes `z` (a cyclic permutation keeps the orientation);
+    /// 2. shear so that `D` becomes `(0, 0, 1)`: `x += Sₓz`, `y += S_yz` with
+    ///    `Sₓ = −Dₓ/D_z`, `S_y = −D_y/D_z`, `S_z = 1/D_z` (applied to `z` later);
+    /// 3. the ray is now the `z` axis; the 2-D edge functions at the origin are
+    ///    `e₀ = BₓC_y − B_yCₓ`, `e₁ = CₓA_y − C_yAₓ`, `e₂ = AₓB_y − A_yBₓ`; the ray hits
+    ///    iff they do not have strictly opposite signs and `det = e₀ + e₁ + e₂ ≠ 0`;
+    /// 4. `t = (e₀A_z + e₁B_z + e₂C_z)·S_z / det`, compared with `t_max` before dividing;
+    /// 5. `t` must exceed pbrt's bound `δt` on its own rounding error (`δz`, `δx`, `δy`,
+    ///    `δe`, `δt` below), so a ray spawned off the surface never re-hits it.
+    ///
+    /// # Precision
+    /// Why no ray slips between two triangles: each transformed vertex is computed the
+    /// same way in every triangle it belongs to, and the two orders of an edge give
+    /// exactly opposite values (`fl(ab) = fl(ba)`, `fl(x − y) = −fl(y − x)`). Moreover
+    /// rounding is monotone, so `fl(fl(ab) − fl(cd))` has the exact sign of `ab − cd` or
+    /// is zero, never the opposite sign. Spurious zeros are accepted as "on the edge" by
+    /// both triangles, so the set of hit triangles can only grow over the exact
+    /// orientation test of the rounded vertices, which covers every ray through the
+    /// mesh's interior. pbrt also recomputes the edge functions in `f64` when one of
+    /// them is exactly zero in `f32` (products of `f32` are exact in `f64`, so the signs
+    /// become exact and an edge is hit by fewer duplicates); we do the same for every
+    /// scalar with at most 26 significant bits (`f32`). For `f64` and double-double
+    /// there is no wider type to fall back to, and none is needed for watertightness.
+    pub fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<(F, [F; 3])> {
+        // 1. Translate to the ray origin and permute: kz = the axis of the largest |Dᵢ|.
+        let o = ray.origin;
+        let ad = ray.direction.abs();
+        let kz = if ad.x > ad.y {
+            if ad.x > ad.z { 0 } else { 2 }
+        } else if ad.y > ad.z {
+            1
+        } else {
+            2
+        };
+        let kx = if kz == 2 { 0 } else { kz + 1 };
+        let ky = if kx == 2 { 0 } else { kx + 1 };
+        let permute = |v: Vec3<F>| Vec3::new(v[kx], v[ky], v[kz]);
+        let d = permute(ray.direction);
+        let (a, b, c) = (permute(self.a - o), permute(self.b - o), permute(self.c - o));
+
+        // 2. Shear x and y; z is scaled by S_z only once the edge tests pass.
+        let sx = -d.x / d.z;
+        let sy = -d.y / d.z;
+        let sz = F::one() / d.z;
+        let (ax, ay) = (a.x + sx * a.z, a.y + sy * a.z);
+        let (bx, by) = (b.x + sx * b.z, b.y + sy * b.z);
+        let (cx, cy) = (c.x + sx * c.z, c.y + sy * c.z);
+
+        // 3. Edge functions: twice the signed areas of the origin with each edge.
+        let mut e0 = bx * cy - by * cx;
+        let mut e1 = cx * ay - cy * ax;
+        let mut e2 = ax * by - ay * bx;
+        let zero = F::zero();
+        if products_exact_in_f64::<F>() && (e0 == zero || e1 == zero || e2 == zero) {
+            let edge = |px: F, py: F, qx: F, qy: F| {
+                F::from_f64(px.to_f64() * qy.to_f64() - py.to_f64() * qx.to_f64())
+            };
+            e0 = edge(bx, by, cx, cy);
+            e1 = edge(cx, cy, ax, ay);
+            e2 = edge(ax, ay, bx, by);
+        }
+        if (e0 < zero || e1 < zero || e2 < zero) && (e0 > zero || e1 > zero || e2 > zero) {
+            return None;
+        }
+        let det = e0 + e1 + e2;
+        if det == zero {
+            return None;
+        }
+
+        // 4. The scaled distance t·det, tested against (0, t_max) without dividing.
+        let (az, bz, cz) = (a.z * sz, b.z * sz, c.z * sz);
+        let t_scaled = e0 * az + e1 * bz + e2 * cz;
+        let in_range = if det < zero {
+            t_scaled < zero && t_scaled > t_max * det
+        } else {
+            t_scaled > zero && t_scaled < t_max * det
+        };
+        if !in_range {
+            return None;
+        }
+        let inv_det = F::one() / det;
+        let bary = [e0 * inv_det, e1 * inv_det, e2 * inv_det];
+        let t = t_scaled * inv_det;
+
+        // 5. pbrt-v4's conservative t > 0 (§6.8.4): bounds on the rounding of the
+        // transformed z (δz), x and y (δx, δy), the edge functions (δe) and t (δt).
+        let max3 = |p: F, q: F, r: F| p.abs().max(q.abs()).max(r.abs());
+        let max_z = max3(az, bz, cz);
+        let delta_z = F::gamma(3) * max_z;
+        let max_x = max3(ax, bx, cx);
+        let max_y = max3(ay, by, cy);
+        let delta_x = F::gamma(5) * (max_x + max_z);
+        let delta_y = F::gamma(5) * (max_y + max_z);
+        let two = F::one() + F::one();
+        let delta_e = two * (F::gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        let max_e = max3(e0, e1, e2);
+        let three = two + F::one();
+        let delta_t =
+            three * (F::gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
+        // Written positively, so a NaN anywhere means "no hit".
+        (t > delta_t && t < t_max).then_some((t, bary))
+    }
+
+    /// The hit with barycentrics `[b₀, b₁, b₂]`: `P = b₀A + b₁B + b₂C`.
+    ///
+    /// # Precision
+    /// pbrt-v4 §6.8.5: the computed barycentrics are non-negative and sum to
+    /// `1 + σ` with `|σ| ≤ γ(4)`, which moves `P` off the triangle's plane by at most
+    /// `|σ|·|A·n̂| ≤ γ(4)·Σ|bᵢVᵢ|`; the three products and two sums add `γ(3)` per
+    /// component. The error bound is `γ(7)·(|b₀A| + |b₁B| + |b₂C|)`.
+    #[inline]
+    fn hit_at(&self, ray: &Ray<F>, t: F, [b0, b1, b2]: [F; 3]) -> Hit<F> {
+        let (pa, pb, pc) = (self.a * b0, self.b * b1, self.c * b2);
+        let point = pa + pb + pc;
+        let error = (pa.abs() + pb.abs() + pc.abs()) * F::gamma(7);
+        Hit::new(t, point, error, self.normal, ray.direction)
+    }
+}
+
+/// Whether a product of two `F`s is exact in `f64` (at most 26 significant bits: `f32`),
+/// so the edge functions can be recomputed there with their exact sign.
+#[inline]
+fn products_exact_in_f64<F: Float>() -> bool {
+    F::epsilon().to_f64() >= f64::EPSILON.sqrt()
+}
+
+impl<F: Float> Hittable<F> for Triangle<F> {
+    #[inline]
+    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+        let (t, bary) = self.intersect(ray, t_max)?;
+        Some(self.hit_at(ray, t, bary))
+    }
+
+    #[inline]
+    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
+        self.intersect(ray, t_max).is_some()
+    }
+
+    /// The vertices' box, widened by one rounding of their magnitude.
+    #[inline]
+    fn bounds(&self) -> Option<Aabb<F>> {
+        let [a, b, c] = self.vertices();
+        let lo = a.min(b).min(c);
+        let hi = a.max(b).max(c);
+        let pad = lo.abs().max(hi.abs()) * F::gamma(1);
+        Some(Aabb::new(lo - pad, hi + pad))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::float::lit;
+
+    fn v<F: Float>(x: f64, y: f64, z: f64) -> Vec3<F> {
+        Vec3::from_f64(x, y, z)
+    }
+
+    fn down<F: Float>(x: f64, y: f64) -> Ray<F> {
+        Ray::new(v(x, y, 0.0), v(0.0, 0.0, -1.0))
+    }
+
+    /// Four triangles around `(0, 0, −2)` in the plane `z = −2`, counter-clockwise seen
+    /// from `+z`, covering the square `[−2, 2]²`: quadrants `+x+y`, `−x+y`, `−x−y`, `+x−y`.
+    fn quadrants<F: Float>() -> [Triangle<F>; 4] {
+        let o = v(0.0, 0.0, -2.0);
+        let ring = [
+            v(2.0, 0.0, -2.0),
+            v(0.0, 2.0, -2.0),
+            v(-2.0, 0.0, -2.0),
+            v(0.0, -2.0, -2.0),
+        ];
+        std::array::from_fn(|i| Triangle::new(o, ring[i], ring[(i + 1) % 4]).unwrap())
+    }
+
+    fn hits_inside<F: Float>() {
+        let tri = Triangle::new(v::<F>(-1.0, -1.0, -5.0), v(1.0, -1.0, -5.0), v(0.0, 1.0, -5.0)).unwrap();
+        assert_eq!(tri.normal(), v(0.0, 0.0, 1.0), "{}", F::NAME);
+        let (t, b) = tri.intersect(&down(0.0, 0.0), F::infinity()).unwrap();
+        assert_eq!(t, lit(5.0), "{}", F::NAME);
+        assert!((b[0] + b[1] + b[2] - F::one()).abs() <= lit::<F>(4.0) * F::epsilon());
+        for (bi, want) in b.into_iter().zip([0.25, 0.25, 0.5]) {
+            assert!(
+                (bi - lit(want)).abs() <= lit::<F>(4.0) * F::epsilon(),
+                "{}: {b:?}",
+                F::NAME
+            );
+        }
+        let h = tri.hit(&down(0.0, 0.0), F::infinity()).unwrap();
+        assert!((h.point - v(0.0, 0.0, -5.0)).abs().max_element() <= h.error.max_element());
+        assert!(h.front_face && h.normal == v(0.0, 0.0, 1.0), "{}", F::NAME);
+        // From behind: the same surface, the other face.
+        let up = Ray::new(v(0.0, 0.0, -9.0), v(0.0, 0.0, 1.0));
+        let h = tri.hit(&up, F::infinity()).unwrap();
+        assert_eq!(h.t, lit(4.0), "{}", F::NAME);
+        assert!(!h.front_face && h.normal == v(0.0, 0.0, -1.0), "{}", F::NAME);
+        // t_max is exclusive.
+        assert!(tri.hit(&down(0.0, 0.0), lit(5.0)).is_none());
+        assert!(tri.occluded(&down(0.0, 0.0), lit::<F>(5.0).next_up()));
+    }
+
+    fn misses_outside_behind_and_parallel<F: Float>() {
+        let tri = Triangle::new(v::<F>(-1.0, -1.0, -5.0), v(1.0, -1.0, -5.0), v(0.0, 1.0, -5.0)).unwrap();
+        let inf = F::infinity();
+        assert!(tri.hit(&down(0.8, 0.8), inf).is_none(), "{}", F::NAME);
+        assert!(tri.hit(&down(0.0, -1.5), inf).is_none(), "{}", F::NAME);
+        let away = Ray::new(Vec3::zero(), v(0.0, 0.0, 1.0));
+        assert!(tri.hit(&away, inf).is_none(), "{}", F::NAME);
+        let parallel = Ray::new(v(-3.0, 0.0, -5.0), v(1.0, 0.0, 0.0));
+        assert!(tri.hit(&parallel, inf).is_none(), "{}", F::NAME);
+        let nan = Ray {
+            origin: v(F::nan().to_f64(), 0.0, 0.0),
+            direction: v(0.0, 0.0, -1.0),
+        };
+        assert!(tri.hit(&nan, inf).is_none(), "{}", F::NAME);
+    }
+
+    /// A ray exactly through a shared edge hits both triangles at the same `t`; one
+    /// through the shared vertex hits all four; one a hair to either side of an edge
+    /// hits exactly one.
+    fn edges_and_vertices_count_consistently<F: Float>() {
+        let quads = quadrants::<F>();
+        let hits = |r: &Ray<F>| {
+            quads
+                .iter()
+                .filter_map(|q| q.hit(r, F::infinity()))
+                .collect::<Vec<_>>()
+        };
+        let on_vertex = hits(&down(0.0, 0.0));
+        assert_eq!(on_vertex.len(), 4, "{}: vertex", F::NAME);
+        for (x, y) in [(0.5, 0.0), (0.0, 1.25), (-0.75, 0.0), (0.0, -1.0)] {
+            let on_edge = hits(&down(x, y));
+            assert_eq!(on_edge.len(), 2, "{}: edge at ({x}, {y})", F::NAME);
+            assert!(
+                on_edge
+                    .iter()
+                    .all(|h| h.t == lit(2.0) && h.point == v(x, y, -2.0))
+            );
+        }
+        for hair in [F::epsilon(), F::min_positive_value()] {
+            for sign in [F::one(), -F::one()] {
+                let r = Ray::new(Vec3::new(lit(0.5), hair * sign, F::zero()), v(0.0, 0.0, -1.0));
+                assert_eq!(hits(&r).len(), 1, "{}: {:?}", F::NAME, r.origin);
+            }
+        }
+        // The outer vertices and edges of the square belong to the mesh too.
+        assert_eq!(hits(&down(2.0, 0.0)).len(), 2, "{}", F::NAME);
+        assert_eq!(hits(&down(1.0, 1.0)).len(), 1, "{}", F::NAME);
+        assert_eq!(hits(&down(1.0, 1.0 + 1e-6)).len(), 0, "{}", F::NAME);
+    }
+
+    fn rejects_degenerate_and_invalid<F: Float>() {
+        let a = v::<F>(0.0, 0.0, 0.0);
+        let b = v::<F>(1.0, 0.0, 0.0);
+        let cases = [
+            ("collinear", a, v(1.0, 1.0, 1.0), v(2.0, 2.0, 2.0)),
+            ("coincident A = B", a, a, v(0.0, 1.0, 0.0)),
+            ("all coincident", b, b, b),
+            ("rounded collinear", a, v(0.1, 0.2, 0.3), v(0.3, 0.6, 0.9)),
+            ("NaN", a, b, Vec3::new(F::nan(), F::zero(), F::zero())),
+            ("infinite", a, b, Vec3::new(F::zero(), F::infinity(), F::zero())),
+            (
+                "thinner than γ(6)",
+                a,
+                b,
+                Vec3::new(F::one(), F::gamma(6) * lit(0.5), F::zero()),
+            ),
+        ];
+        for (why, a, b, c) in cases {
+            match Triangle::new(a, b, c) {
+                Err(Error::InvalidValue { what: "triangle", .. }) => {}
+                other => panic!(
+                    "{}: {why}: expected InvalidValue(triangle), got {other:?}",
+                    F::NAME
+                ),
+            }
+        }
+        // Thin but above the threshold: valid, with the right normal.
+        let thin = Triangle::new(a, b, Vec3::new(F::one(), F::gamma(6) * lit(4.0), F::zero())).unwrap();
+        assert_eq!(thin.normal(), v(0.0, 0.0, 1.0), "{}", F::NAME);
+    }
+
+    macro_rules! for_each_scalar {
+        ($($name:ident),*) => {$(
+            #[test]
+            fn $name() {
+                super::$name::<f32>();
+                super::$name::<f64>();
+            }
+        )*};
+    }
+
+    mod scalars {
+        for_each_scalar!(
+            hits_inside,
+            misses_outside_behind_and_parallel,
+            edges_and_vertices_count_consistently,
+            rejects_degenerate_and_invalid
+        );
+    }
+}
