@@ -1,9 +1,11 @@
 //! The spec's abstract material: the [`Material`] trait, the [`Scatter`] it returns,
 //! and [`MaterialKind`], the enum fast path over the concrete materials.
 
+mod dielectric;
 mod lambertian;
 mod mirror;
 
+pub use dielectric::{Dielectric, Reflectance};
 pub use lambertian::{CosineSampler, Lambertian};
 pub use mirror::Mirror;
 
@@ -62,6 +64,8 @@ pub enum MaterialKind<F> {
     Mirror(Mirror<F>),
     /// A matte [`Lambertian`] surface.
     Lambertian(Lambertian<F>),
+    /// A refracting [`Dielectric`] (glass).
+    Dielectric(Dielectric<F>),
 }
 
 impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
@@ -70,6 +74,7 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
         match self {
             Self::Mirror(m) => Material::<F, R>::scatter(m, ray, hit, rng),
             Self::Lambertian(m) => m.scatter(ray, hit, rng),
+            Self::Dielectric(m) => m.scatter(ray, hit, rng),
         }
     }
     #[inline]
@@ -77,6 +82,7 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
         match self {
             Self::Mirror(m) => Material::<F, R>::diffuse_albedo(m),
             Self::Lambertian(m) => Material::<F, R>::diffuse_albedo(m),
+            Self::Dielectric(m) => Material::<F, R>::diffuse_albedo(m),
         }
     }
 }
@@ -90,5 +96,11 @@ impl<F> From<Mirror<F>> for MaterialKind<F> {
 impl<F> From<Lambertian<F>> for MaterialKind<F> {
     fn from(m: Lambertian<F>) -> Self {
         Self::Lambertian(m)
+    }
+}
+
+impl<F> From<Dielectric<F>> for MaterialKind<F> {
+    fn from(m: Dielectric<F>) -> Self {
+        Self::Dielectric(m)
     }
 }
