@@ -118,9 +118,9 @@ impl<F: Float> Bvh<F> {
         });
         let axis = cb.longest_axis();
         let (lo, hi) = (cb.min[axis], cb.max[axis]);
-        if !(hi > lo) {
+        if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
             // All centroids coincide: no split can separate them.
-            return (n > MAX_LEAF).then(|| (axis, n / 2));
+            return (n > MAX_LEAF).then_some((axis, n / 2));
         }
         let scale = lit::<F>(BINS as f64) / (hi - lo);
         let bin_of = |c: F| ((c - lo) * scale).to_f64().clamp(0.0, (BINS - 1) as f64) as usize;
@@ -158,7 +158,7 @@ impl<F: Float> Bvh<F> {
             return None;
         }
         if !best_cost.is_finite() {
-            return (n > MAX_LEAF).then(|| (axis, n / 2));
+            return (n > MAX_LEAF).then_some((axis, n / 2));
         }
         let mid = partition(items, |it| bin_of(it.centroid[axis]) <= best);
         Some((axis, mid))

@@ -1,13 +1,14 @@
 //! A scene: objects (a shape with its material), point lights and a background.
 
 use crate::background::Background;
+use crate::bvh::Bvh;
 use crate::float::Float;
 use crate::light::PointLight;
 use crate::material::{Material, MaterialKind};
 use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, ShapeKind};
 use std::marker::PhantomData;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// One object of a scene: a shape and the material it is made of.
 #[derive(Clone, Debug, PartialEq)]
@@ -22,12 +23,47 @@ pub struct Object<S, M> {
 /// type `M` so the same renderer serves both dispatch paths:
 /// [`EnumScene`] (compile-time `match`) and [`DynScene`] (trait objects, the spec's
 /// "vector of smart pointers").
+///
+/// Intersection is a plain loop over the objects until there are enough of them for a
+/// bounding volume hierarchy to pay ([`Acceleration::Auto`]); the hierarchy is built on
+/// the first query after a change and holds only the shapes with
+/// [`bounds`](Hittable::bounds) (planes and unbounded shapes stay in the loop).
 #[derive(Clone, Debug)]
 pub struct Scene<F, S, M> {
     objects: Vec<Object<S, M>>,
     lights: Vec<PointLight<F>>,
     background: Background<F>,
+    acceleration: Acceleration,
+    index: OnceLock<Option<Index<F>>>,
     _scalar: PhantomData<F>,
+}
+
+/// Whether a scene intersects through a BVH.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Acceleration {
+    /// A BVH once the scene has at least [`Acceleration::AUTO_THRESHOLD`] bounded objects.
+    #[default]
+    Auto,
+    /// Always the plain loop.
+    Linear,
+    /// Always a BVH over the bounded objects.
+    Bvh,
+}
+
+impl Acceleration {
+    /// The bounded-object count from which [`Acceleration::Auto`] builds a BVH: below it
+    /// the loop is as fast (measured by the `bvh-threshold` bench).
+    pub const AUTO_THRESHOLD: usize = 8;
+}
+
+/// The BVH over the bounded objects and the list of the others.
+#[derive(Clone, Debug)]
+struct Index<F> {
+    bvh: Bvh<F>,
+    /// Object index of each BVH primitive.
+    bounded: Vec<u32>,
+    /// Objects without bounds, tested one by one.
+    unbounded: Vec<u32>,
 }
 
 /// The fast path: shapes and materials are enums, stored inline.
@@ -43,8 +79,17 @@ impl<F: Float, S, M> Scene<F, S, M> {
             objects: Vec::new(),
             lights: Vec::new(),
             background,
+            acceleration: Acceleration::Auto,
+            index: OnceLock::new(),
             _scalar: PhantomData,
         }
+    }
+
+    /// Chooses how the scene is intersected (the default is [`Acceleration::Auto`]).
+    pub fn set_acceleration(&mut self, acceleration: Acceleration) -> &mut Self {
+        self.acceleration = acceleration;
+        self.index = OnceLock::new();
+        self
     }
 
     /// Adds an object made of `shape` and `material`.
@@ -53,6 +98,7 @@ impl<F: Float, S, M> Scene<F, S, M> {
             shape: shape.into(),
             material: material.into(),
         });
+        self.index = OnceLock::new();
         self
     }
 
@@ -79,23 +125,78 @@ impl<F: Float, S, M> Scene<F, S, M> {
 }
 
 impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
+    /// Whether intersection goes through a BVH (building it if it is due).
+    pub fn uses_bvh(&self) -> bool {
+        self.index().is_some()
+    }
+
+    fn index(&self) -> Option<&Index<F>> {
+        self.index
+            .get_or_init(|| {
+                let (mut bounded, mut boxes, mut unbounded) = (Vec::new(), Vec::new(), Vec::new());
+                for (i, o) in self.objects.iter().enumerate() {
+                    match o.shape.bounds() {
+                        Some(b) => {
+                            bounded.push(i as u32);
+                            boxes.push(b);
+                        }
+                        None => unbounded.push(i as u32),
+                    }
+                }
+                let wanted = match self.acceleration {
+                    Acceleration::Auto => bounded.len() >= Acceleration::AUTO_THRESHOLD,
+                    Acceleration::Linear => false,
+                    Acceleration::Bvh => true,
+                };
+                wanted.then(|| Index {
+                    bvh: Bvh::build(&boxes),
+                    bounded,
+                    unbounded,
+                })
+            })
+            .as_ref()
+    }
+
     /// The nearest hit in `(0, t_max)` and the material hit.
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &M)> {
         let mut nearest = t_max;
-        let mut found = None;
-        for object in &self.objects {
-            if let Some(hit) = object.shape.hit(ray, nearest) {
-                nearest = hit.t;
-                found = Some((hit, &object.material));
+        let mut found: Option<(Hit<F>, usize)> = None;
+        let mut test = |i: usize, t_max: F| {
+            let hit = self.objects[i].shape.hit(ray, t_max)?;
+            found = Some((hit, i));
+            Some(hit.t)
+        };
+        match self.index() {
+            None => {
+                for i in 0..self.objects.len() {
+                    if let Some(t) = test(i, nearest) {
+                        nearest = t;
+                    }
+                }
+            }
+            Some(ix) => {
+                for &i in &ix.unbounded {
+                    if let Some(t) = test(i as usize, nearest) {
+                        nearest = t;
+                    }
+                }
+                ix.bvh
+                    .traverse(ray, nearest, |k, t_max| test(ix.bounded[k] as usize, t_max));
             }
         }
-        found
+        found.map(|(hit, i)| (hit, &self.objects[i].material))
     }
 
     /// Whether any object blocks the ray in `(0, t_max)`; stops at the first.
     #[inline]
     pub fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        self.objects.iter().any(|o| o.shape.occluded(ray, t_max))
+        let blocks = |i: u32| self.objects[i as usize].shape.occluded(ray, t_max);
+        match self.index() {
+            None => self.objects.iter().any(|o| o.shape.occluded(ray, t_max)),
+            Some(ix) => {
+                ix.unbounded.iter().any(|&i| blocks(i)) || ix.bvh.any(ray, t_max, |k| blocks(ix.bounded[k]))
+            }
+        }
     }
 }

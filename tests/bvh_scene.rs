@@ -1,0 +1,93 @@
+//! A scene answers the same through its BVH as through the plain loop: same nearest hits,
+//! same shadow queries, same image bytes.
+
+use rand::{RngExt, SeedableRng};
+use raytrace::prelude::*;
+use raytrace::{Acceleration, DefaultRng};
+
+/// 300 random spheres and triangles around the origin, plus a ground plane (unbounded, so
+/// it stays outside the BVH).
+fn scene<F: Float>(acceleration: Acceleration) -> EnumScene<F> {
+    let mut rng = DefaultRng::seed_from_u64(17);
+    let mut scene = EnumScene::new(Background::default());
+    let mut v = |s: f64| {
+        Vec3::from_f64(
+            rng.random_range(-s..s),
+            rng.random_range(-s..s),
+            rng.random_range(-s..s),
+        )
+    };
+    for i in 0..300 {
+        let c = v(6.0) + Vec3::from_f64(0.0, 0.0, -10.0);
+        let m: MaterialKind<F> = if i % 3 == 0 {
+            Mirror::new(Vec3::from_f64(0.9, 0.8, 0.7)).unwrap().into()
+        } else {
+            Lambertian::new(Vec3::from_f64(0.5, 0.6, 0.7)).unwrap().into()
+        };
+        if i % 2 == 0 {
+            scene.add(Sphere::new(c, lit(0.4)).unwrap(), m);
+        } else {
+            scene.add(Triangle::new(c + v(0.7), c + v(0.7), c + v(0.7)).unwrap(), m);
+        }
+    }
+    scene.add(
+        Plane::new(Vec3::from_f64(0.0, -7.0, 0.0), Vec3::from_f64(0.0, 1.0, 0.0)).unwrap(),
+        Lambertian::new(Vec3::splat(lit(0.5))).unwrap(),
+    );
+    scene.add_light(PointLight::new(Vec3::from_f64(0.0, 8.0, -8.0), Vec3::splat(lit(50.0))).unwrap());
+    scene.set_acceleration(acceleration);
+    scene
+}
+
+fn same_queries<F: Float>() {
+    let linear = scene::<F>(Acceleration::Linear);
+    let bvh = scene::<F>(Acceleration::Bvh);
+    assert!(!linear.uses_bvh() && bvh.uses_bvh());
+    let mut rng = DefaultRng::seed_from_u64(3);
+    let mut hits = 0;
+    for _ in 0..20_000 {
+        let o = Vec3::from_f64(rng.random_range(-3.0..3.0), rng.random_range(-3.0..3.0), 0.0);
+        let target = Vec3::from_f64(rng.random_range(-8.0..8.0), rng.random_range(-8.0..8.0), -10.0);
+        let ray = Ray::towards(o, target).unwrap();
+        let a = linear.hit(&ray, F::infinity()).map(|(h, m)| (h, *m));
+        let b = bvh.hit(&ray, F::infinity()).map(|(h, m)| (h, *m));
+        assert_eq!(a, b, "{ray:?}");
+        hits += usize::from(a.is_some());
+        let t_max = lit(rng.random_range(1.0..15.0));
+        assert_eq!(linear.occluded(&ray, t_max), bvh.occluded(&ray, t_max));
+    }
+    assert!(hits > 10_000, "the rays should mostly hit something ({hits})");
+}
+
+#[test]
+fn bvh_answers_like_the_loop_f32() {
+    same_queries::<f32>();
+}
+
+#[test]
+fn bvh_answers_like_the_loop_f64() {
+    same_queries::<f64>();
+}
+
+#[test]
+fn bvh_renders_the_same_bytes() {
+    let cam = ScreenCamera::new(48, 24).unwrap();
+    let s = RenderSettings::new(2, 6, 1).unwrap();
+    let a = render(&scene::<f32>(Acceleration::Linear), &cam, &s).unwrap();
+    let b = render(&scene::<f32>(Acceleration::Bvh), &cam, &s).unwrap();
+    assert_eq!(a.image, b.image);
+    assert_eq!(a.stats.rays, b.stats.rays);
+}
+
+#[test]
+fn auto_uses_a_bvh_only_from_the_threshold() {
+    let mut small = EnumScene::<f64>::new(Background::default());
+    for i in 0..Acceleration::AUTO_THRESHOLD {
+        assert!(!small.uses_bvh(), "{i} objects");
+        small.add(
+            Sphere::new(Vec3::new(i as f64, 0.0, -5.0), 0.3).unwrap(),
+            Mirror::new(Vec3::splat(0.5)).unwrap(),
+        );
+    }
+    assert!(small.uses_bvh());
+}
