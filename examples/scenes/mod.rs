@@ -57,3 +57,129 @@ pub fn point_lights<F: Float>() -> raytrace::Result<EnumScene<F>> {
     scene.add_light(light(0.0, 4.0, -6.0, 15.0, 15.0, 15.0)?);
     Ok(scene)
 }
+
+/// The final scene of *Ray Tracing in One Weekend*: a large matte ground sphere, three big
+/// spheres (glass, matte, mirror) and a 22×22 grid of small random spheres — matte (80 %),
+/// mirror (15 %) or glass (5 %) — jittered from the `seed`, skipping the spot by the
+/// mirror. (The book's fuzzy metal is a plain mirror here: the spec models no fuzz.)
+pub fn random_spheres<F: Float>(seed: u64) -> raytrace::Result<EnumScene<F>> {
+    use rand::{RngExt, SeedableRng};
+    let mut rng = raytrace::DefaultRng::seed_from_u64(seed);
+    let mut scene = EnumScene::new(Background::default());
+    let sphere = |x: f64, y: f64, z: f64, r: f64| Sphere::new(Vec3::from_f64(x, y, z), lit(r));
+    let rgb = |r: f64, g: f64, b: f64| Vec3::from_f64(r, g, b);
+    scene.add(
+        sphere(0.0, -1000.0, 0.0, 1000.0)?,
+        Lambertian::new(rgb(0.5, 0.5, 0.5))?,
+    );
+    for a in -11..11 {
+        for b in -11..11 {
+            let choose: f64 = rng.random();
+            let (x, z) = (
+                f64::from(a) + 0.9 * rng.random::<f64>(),
+                f64::from(b) + 0.9 * rng.random::<f64>(),
+            );
+            if ((x - 4.0).powi(2) + (z).powi(2)).sqrt() <= 0.9 {
+                continue;
+            }
+            let shape = sphere(x, 0.2, z, 0.2)?;
+            if choose < 0.8 {
+                let mut c = || rng.random::<f64>() * rng.random::<f64>();
+                scene.add(shape, Lambertian::new(rgb(c(), c(), c()))?);
+            } else if choose < 0.95 {
+                let mut c = || rng.random_range(0.5..1.0);
+                scene.add(shape, Mirror::new(rgb(c(), c(), c()))?);
+            } else {
+                scene.add(shape, Dielectric::new(lit(1.5))?);
+            }
+        }
+    }
+    scene.add(sphere(0.0, 1.0, 0.0, 1.0)?, Dielectric::new(lit(1.5))?);
+    scene.add(sphere(-4.0, 1.0, 0.0, 1.0)?, Lambertian::new(rgb(0.4, 0.2, 0.1))?);
+    scene.add(sphere(4.0, 1.0, 0.0, 1.0)?, Mirror::new(rgb(0.7, 0.6, 0.5))?);
+    Ok(scene)
+}
+
+/// The book's camera for [`random_spheres`]: from `(13, 2, 3)` towards the origin, 20°
+/// vertical field of view, 16:9.
+pub fn random_spheres_camera<F: Float>(width: usize) -> raytrace::Result<LookAtCamera<F>> {
+    LookAtCamera::new(
+        Vec3::from_f64(13.0, 2.0, 3.0),
+        Vec3::zero(),
+        Vec3::from_f64(0.0, 1.0, 0.0),
+        lit(20.0),
+        width,
+        (width * 9 / 16).max(1),
+    )
+}
+
+/// Glass (the spec's refraction extra): a solid glass sphere, a hollow one (an inner
+/// sphere of index 1/1.5 inside an outer one of 1.5), a mirror and matte spheres on a matte
+/// ground, for the spec's camera.
+pub fn glass<F: Float>() -> raytrace::Result<EnumScene<F>> {
+    let mut scene = EnumScene::new(Background::default());
+    let sphere = |x, y, z, r| Sphere::new(Vec3::from_f64(x, y, z), lit(r));
+    let matte = |r, g, b| Lambertian::new(Vec3::from_f64(r, g, b));
+    scene.add(sphere(0.0, -1000.8, -4.0, 1000.0)?, matte(0.55, 0.6, 0.5)?);
+    scene.add(sphere(-1.7, 0.0, -4.0, 0.8)?, Dielectric::new(lit(1.5))?);
+    scene.add(sphere(0.0, 0.0, -4.0, 0.8)?, Dielectric::new(lit(1.5))?);
+    scene.add(sphere(0.0, 0.0, -4.0, 0.7)?, Dielectric::new(lit(1.0 / 1.5))?);
+    scene.add(
+        sphere(1.7, 0.0, -4.0, 0.8)?,
+        Mirror::new(Vec3::from_f64(0.8, 0.6, 0.2))?,
+    );
+    scene.add(sphere(-0.9, -0.55, -2.9, 0.25)?, matte(0.8, 0.2, 0.2)?);
+    scene.add(sphere(0.8, -0.6, -2.7, 0.2)?, Dielectric::new(lit(1.5))?);
+    scene.add(sphere(0.0, 0.1, -7.0, 0.9)?, matte(0.2, 0.3, 0.8)?);
+    Ok(scene)
+}
+
+/// The new shapes: an infinite plane as the ground, a pyramid and a tetrahedron of
+/// triangles, beside spheres, for the spec's camera.
+pub fn plane_and_triangles<F: Float>() -> raytrace::Result<EnumScene<F>> {
+    let mut scene = EnumScene::new(Background::default());
+    let p = |x, y, z| Vec3::<F>::from_f64(x, y, z);
+    let matte = |r, g, b| Lambertian::new(Vec3::from_f64(r, g, b));
+    let mirror = |r, g, b| Mirror::new(Vec3::from_f64(r, g, b));
+    scene.add(
+        Plane::new(p(0.0, -0.8, 0.0), p(0.0, 1.0, 0.0))?,
+        matte(0.5, 0.5, 0.55)?,
+    );
+    // A square pyramid of four mirror-gold triangles (counter-clockwise seen from outside).
+    let (apex, base) = (
+        p(-1.4, 0.7, -4.5),
+        [
+            p(-2.4, -0.8, -3.5),
+            p(-0.4, -0.8, -3.5),
+            p(-0.4, -0.8, -5.5),
+            p(-2.4, -0.8, -5.5),
+        ],
+    );
+    for k in 0..4 {
+        scene.add(
+            Triangle::new(base[k], base[(k + 1) % 4], apex)?,
+            mirror(0.9, 0.75, 0.4)?,
+        );
+    }
+    // A matte tetrahedron.
+    let t = [
+        p(1.0, -0.8, -3.6),
+        p(2.6, -0.8, -4.0),
+        p(1.6, -0.8, -5.2),
+        p(1.7, 0.6, -4.3),
+    ];
+    for (a, b, c, col) in [
+        (0, 2, 1, (0.8, 0.3, 0.2)),
+        (0, 1, 3, (0.2, 0.6, 0.8)),
+        (1, 2, 3, (0.3, 0.7, 0.3)),
+        (2, 0, 3, (0.9, 0.9, 0.4)),
+    ] {
+        scene.add(Triangle::new(t[a], t[b], t[c])?, matte(col.0, col.1, col.2)?);
+    }
+    scene.add(
+        Sphere::new(p(0.3, -0.3, -3.0), lit(0.5))?,
+        mirror(0.85, 0.85, 0.9)?,
+    );
+    scene.add(Sphere::new(p(3.5, 0.2, -6.0), lit(1.0))?, matte(0.7, 0.3, 0.6)?);
+    Ok(scene)
+}
