@@ -70,34 +70,94 @@ impl<F: Float> Aabb<F> {
         }
     }
 
-    /// Whether the ray meets the box for some `t` in `(0, t_max)`, by the slab test with
-    /// the reciprocal direction `inv_d = 1/D` (infinite components are fine).
+    /// Whether the ray meets the box for some `t` in `(0, t_max)`, by the slab test.
+    /// For many boxes and one ray, build a [`RayBoxTest`] once instead.
+    #[inline]
+    pub fn hit(&self, ray: &Ray<F>, t_max: F) -> bool {
+        RayBoxTest::new(ray).hit(&self.corners(), t_max)
+    }
+
+    /// `[min, max]`, the layout [`RayBoxTest`] indexes by the ray's direction signs.
+    #[inline]
+    pub fn corners(&self) -> [Vec3<F>; 2] {
+        [self.min, self.max]
+    }
+}
+
+/// A ray prepared for many slab tests: its origin, reciprocal direction and direction
+/// signs, so each box costs six subtractions, six multiplications and a few min/max.
+#[derive(Clone, Copy, Debug)]
+pub struct RayBoxTest<F> {
+    origin: Vec3<F>,
+    inv_d: Vec3<F>,
+    /// Per axis, 1 if the direction is negative: the index of the near corner.
+    neg: [usize; 3],
+    grow: F,
+}
+
+impl<F: Float> RayBoxTest<F> {
+    /// Prepares `ray` (`1/D` may have infinite components; that is fine).
+    #[inline]
+    pub fn new(ray: &Ray<F>) -> Self {
+        let inv_d = ray.direction.map(|d| F::one() / d);
+        Self {
+            origin: ray.origin,
+            inv_d,
+            neg: [
+                usize::from(inv_d.x < F::zero()),
+                usize::from(inv_d.y < F::zero()),
+                usize::from(inv_d.z < F::zero()),
+            ],
+            grow: F::one() + F::gamma(3) * crate::float::lit(2.0),
+        }
+    }
+
+    /// Whether the direction's component on `axis` is negative.
+    #[inline]
+    pub fn negative(&self, axis: usize) -> bool {
+        self.neg[axis] == 1
+    }
+
+    /// Whether the ray meets `b` for some `t` in `(0, t_max)`.
+    #[inline]
+    pub fn hit(&self, corners: &[Vec3<F>; 2], t_max: F) -> bool {
+        self.entry(corners, t_max).is_some()
+    }
+
+    /// Where the ray enters the box `corners = [min, max]` (clamped to 0 if it starts inside), if it meets `b` for
+    /// some `t` in `(0, t_max)`: the intersection of the three slabs
+    /// `t ∈ [(near − O)/D, (far − O)/D]`, the near face chosen by the sign of `D`, with an
+    /// exit as soon as the running interval is empty.
     ///
     /// # Precision
-    /// pbrt-v4 §6.1.2: the far slab distance is scaled by `1 + 2γ(3)` so rounding never
-    /// makes a ray that grazes the box miss it (the test stays conservative).
+    /// pbrt-v4 §6.1.2: the far distances are scaled by `1 + 2γ(3)` so rounding never
+    /// makes a ray that grazes the box miss it (the test stays conservative). A ray lying
+    /// in a slab's plane gives `0·∞ = NaN`, which fails every comparison: no constraint.
     #[inline]
-    pub fn hit(&self, ray: &Ray<F>, inv_d: Vec3<F>, t_max: F) -> bool {
-        let grow = F::one() + F::gamma(3) * crate::float::lit(2.0);
+    pub fn entry(&self, corners: &[Vec3<F>; 2], t_max: F) -> Option<F> {
         let mut t0 = F::zero();
         let mut t1 = t_max;
+        // The axis indexes five arrays at once; an iterator chain would hide that.
+        #[allow(clippy::needless_range_loop)]
         for axis in 0..3 {
-            let near = (self.min[axis] - ray.origin[axis]) * inv_d[axis];
-            let far = (self.max[axis] - ray.origin[axis]) * inv_d[axis];
-            let (near, far) = if near > far { (far, near) } else { (near, far) };
-            // NaN (0·∞ for a ray in a slab's plane) fails both comparisons and keeps t0, t1.
-            let far = far * grow;
-            if near > t0 {
-                t0 = near;
+            // Index by the sign, not a branch (Williams et al. 2005); `& 1` proves the bound.
+            let n = self.neg[axis] & 1;
+            let (near, far) = (corners[n][axis], corners[n ^ 1][axis]);
+            let o = self.origin[axis];
+            let inv = self.inv_d[axis];
+            let tn = (near - o) * inv;
+            let tf = (far - o) * inv * self.grow;
+            if tn > t0 {
+                t0 = tn;
             }
-            if far < t1 {
-                t1 = far;
+            if tf < t1 {
+                t1 = tf;
             }
             if t0 > t1 {
-                return false;
+                return None;
             }
         }
-        true
+        Some(t0)
     }
 }
 
@@ -120,18 +180,18 @@ mod tests {
     #[test]
     fn slab_test() {
         let b = unit_box();
-        let (r, inv) = ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]);
-        assert!(b.hit(&r, inv, f64::INFINITY));
-        assert!(!b.hit(&r, inv, 3.9), "box starts at t = 4");
-        let (r, inv) = ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]);
-        assert!(!b.hit(&r, inv, f64::INFINITY), "box is behind");
-        let (r, inv) = ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]);
-        assert!(!b.hit(&r, inv, f64::INFINITY));
-        let (r, inv) = ray([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]);
-        assert!(b.hit(&r, inv, f64::INFINITY), "origin inside");
+        let (r, _) = ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]);
+        assert!(b.hit(&r, f64::INFINITY));
+        assert!(!b.hit(&r, 3.9), "box starts at t = 4");
+        let (r, _) = ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]);
+        assert!(!b.hit(&r, f64::INFINITY), "box is behind");
+        let (r, _) = ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]);
+        assert!(!b.hit(&r, f64::INFINITY));
+        let (r, _) = ray([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]);
+        assert!(b.hit(&r, f64::INFINITY), "origin inside");
         // A ray in the plane of a face (0·∞ = NaN in the slab) still counts as touching.
-        let (r, inv) = ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]);
-        assert!(b.hit(&r, inv, f64::INFINITY));
+        let (r, _) = ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]);
+        assert!(b.hit(&r, f64::INFINITY));
     }
 
     #[test]

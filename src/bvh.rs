@@ -2,7 +2,7 @@
 //! ordered stack traversal. It only indexes primitives by their boxes; the scene owns
 //! the primitives and tests them in the callbacks.
 
-use crate::aabb::Aabb;
+use crate::aabb::{Aabb, RayBoxTest};
 use crate::float::{Float, lit};
 use crate::ray::Ray;
 use crate::vec3::Vec3;
@@ -10,24 +10,23 @@ use crate::vec3::Vec3;
 /// Most primitives a leaf may hold.
 const MAX_LEAF: usize = 4;
 /// Centroid bins per axis for the SAH sweep.
-const BINS: usize = 12;
+const BINS: usize = 16;
 /// Depth from which nodes split at the median instead of by SAH, so the tree's depth,
 /// and the traversal stack, stay below `MEDIAN_DEPTH + 32` whatever the input.
 const MEDIAN_DEPTH: usize = 40;
-/// Traversal stack size: deeper than any tree [`Bvh::build`] makes.
-const STACK: usize = MEDIAN_DEPTH + 34;
 /// Cost of visiting a node, relative to one primitive test (pbrt uses ⅛–1; this was
 /// measured on the random-spheres scene, where it hardly matters between ⅛ and ½).
 const TRAVERSAL_COST: f64 = 0.25;
 
-/// One node of the flattened tree. An interior node's left child follows it directly;
-/// `offset` is its right child. A leaf holds `indices[offset..offset + count]`.
+/// One node of the flattened tree (32 bytes in f32). An interior node's children are the
+/// adjacent pair `nodes[offset]`, `nodes[offset + 1]` (one bounds check fetches both);
+/// a leaf holds `indices[offset..offset + count]`.
 #[derive(Clone, Copy, Debug)]
 struct Node<F> {
-    bounds: Aabb<F>,
+    /// `[min, max]` of the node's box.
+    bounds: [Vec3<F>; 2],
     offset: u32,
     count: u16,
-    axis: u8,
 }
 
 /// A bounding volume hierarchy over primitives `0..n` given by their boxes.
@@ -35,6 +34,8 @@ struct Node<F> {
 pub struct Bvh<F> {
     nodes: Vec<Node<F>>,
     indices: Vec<u32>,
+    /// Levels below the root: the most subtrees a traversal can have stacked.
+    depth: usize,
 }
 
 struct Item<F> {
@@ -63,9 +64,15 @@ impl<F: Float> Bvh<F> {
         let mut bvh = Self {
             nodes: Vec::with_capacity(2 * bounds.len()),
             indices: Vec::with_capacity(bounds.len()),
+            depth: 0,
         };
         if !items.is_empty() {
-            bvh.build_node(&mut items, 0);
+            bvh.nodes.push(Node {
+                bounds: Aabb::empty().corners(),
+                offset: 0,
+                count: 0,
+            });
+            bvh.build_node(0, &mut items, 0);
         }
         bvh
     }
@@ -75,26 +82,29 @@ impl<F: Float> Bvh<F> {
         self.nodes.len()
     }
 
-    fn build_node(&mut self, items: &mut [Item<F>], depth: usize) -> usize {
+    /// Fills the (already allocated) node `me` with the subtree over `items`.
+    fn build_node(&mut self, me: usize, items: &mut [Item<F>], depth: usize) {
+        self.depth = self.depth.max(depth);
         let bounds = items.iter().fold(Aabb::empty(), |b, it| b.union(it.bounds));
-        let me = self.nodes.len();
-        self.nodes.push(Node {
-            bounds,
-            offset: 0,
-            count: 0,
-            axis: 0,
-        });
+        self.nodes[me].bounds = bounds.corners();
         let split = if depth < MEDIAN_DEPTH {
             self.split(items, &bounds)
         } else {
             median_split(items)
         };
         match split {
-            Some((axis, mid)) => {
-                self.build_node(&mut items[..mid], depth + 1);
-                let right = self.build_node(&mut items[mid..], depth + 1);
-                self.nodes[me].offset = right as u32;
-                self.nodes[me].axis = axis as u8;
+            Some((_axis, mid)) => {
+                let left = self.nodes.len();
+                let empty = Node {
+                    bounds: Aabb::empty().corners(),
+                    offset: 0,
+                    count: 0,
+                };
+                self.nodes.extend([empty, empty]);
+                self.nodes[me].offset = left as u32;
+                let (l, r) = items.split_at_mut(mid);
+                self.build_node(left, l, depth + 1);
+                self.build_node(left + 1, r, depth + 1);
             }
             None => {
                 self.nodes[me].offset = self.indices.len() as u32;
@@ -102,11 +112,11 @@ impl<F: Float> Bvh<F> {
                 self.indices.extend(items.iter().map(|it| it.index));
             }
         }
-        me
     }
 
     /// The SAH split `(axis, mid)` partitioning `items` in place, or `None` for a leaf.
     ///
+    /// Centroids are binned along each of the three axes; the cheapest bin boundary wins.
     /// Cost of a split: `C_t + (A_L·N_L + A_R·N_R)/A`, of a leaf: `N` (MacDonald & Booth).
     fn split(&self, items: &mut [Item<F>], bounds: &Aabb<F>) -> Option<(usize, usize)> {
         let n = items.len();
@@ -116,94 +126,137 @@ impl<F: Float> Bvh<F> {
         let cb = items.iter().fold(Aabb::empty(), |b, it| {
             b.union(Aabb::new(it.centroid, it.centroid))
         });
-        let axis = cb.longest_axis();
-        let (lo, hi) = (cb.min[axis], cb.max[axis]);
-        if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
-            // All centroids coincide: no split can separate them.
-            return (n > MAX_LEAF).then_some((axis, n / 2));
-        }
-        let scale = lit::<F>(BINS as f64) / (hi - lo);
-        let bin_of = |c: F| ((c - lo) * scale).to_f64().clamp(0.0, (BINS - 1) as f64) as usize;
-        let mut bins = [(Aabb::empty(), 0usize); BINS];
-        for it in items.iter() {
-            let b = &mut bins[bin_of(it.centroid[axis])];
-            b.0 = b.0.union(it.bounds);
-            b.1 += 1;
-        }
-        // Sweep from the right to get the right-hand areas, then from the left.
-        let mut right_area = [0.0f64; BINS];
-        let (mut acc, mut cnt) = (Aabb::empty(), 0usize);
-        let mut right_count = [0usize; BINS];
-        for i in (1..BINS).rev() {
-            acc = acc.union(bins[i].0);
-            cnt += bins[i].1;
-            right_area[i] = acc.surface_area().to_f64();
-            right_count[i] = cnt;
-        }
         let area = bounds.surface_area().to_f64().max(f64::MIN_POSITIVE);
-        let (mut best, mut best_cost) = (0, f64::INFINITY);
-        let (mut acc, mut cnt) = (Aabb::empty(), 0usize);
-        for i in 0..BINS - 1 {
-            acc = acc.union(bins[i].0);
-            cnt += bins[i].1;
-            let cost = TRAVERSAL_COST
-                + (acc.surface_area().to_f64() * cnt as f64 + right_area[i + 1] * right_count[i + 1] as f64)
-                    / area;
-            if cnt > 0 && right_count[i + 1] > 0 && cost < best_cost {
-                best = i;
-                best_cost = cost;
+        // (cost, axis, last bin of the left side)
+        let mut best: Option<(f64, usize, usize)> = None;
+        for axis in 0..3 {
+            let (lo, hi) = (cb.min[axis], cb.max[axis]);
+            if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
+                continue;
+            }
+            let bin_of = binner(lo, hi);
+            let mut bins = [(Aabb::empty(), 0usize); BINS];
+            for it in items.iter() {
+                let b = &mut bins[bin_of(it.centroid[axis])];
+                b.0 = b.0.union(it.bounds);
+                b.1 += 1;
+            }
+            // Sweep from the right for the right-hand areas and counts, then from the left.
+            let mut right = [(0.0f64, 0usize); BINS];
+            let (mut acc, mut cnt) = (Aabb::empty(), 0usize);
+            for i in (1..BINS).rev() {
+                acc = acc.union(bins[i].0);
+                cnt += bins[i].1;
+                right[i] = (acc.surface_area().to_f64(), cnt);
+            }
+            let (mut acc, mut cnt) = (Aabb::empty(), 0usize);
+            for i in 0..BINS - 1 {
+                acc = acc.union(bins[i].0);
+                cnt += bins[i].1;
+                let (ra, rc) = right[i + 1];
+                if cnt == 0 || rc == 0 {
+                    continue;
+                }
+                let cost =
+                    TRAVERSAL_COST + (acc.surface_area().to_f64() * cnt as f64 + ra * rc as f64) / area;
+                if best.is_none_or(|(c, _, _)| cost < c) {
+                    best = Some((cost, axis, i));
+                }
             }
         }
-        if n <= MAX_LEAF && best_cost >= n as f64 {
-            return None;
+        match best {
+            // Every centroid coincides: no plane separates them.
+            None => (n > MAX_LEAF).then_some((0, n / 2)),
+            Some((cost, _, _)) if n <= MAX_LEAF && cost >= n as f64 => None,
+            Some((_, axis, last)) => {
+                let bin_of = binner(cb.min[axis], cb.max[axis]);
+                let mid = partition(items, |it| bin_of(it.centroid[axis]) <= last);
+                Some((axis, mid))
+            }
         }
-        if !best_cost.is_finite() {
-            return (n > MAX_LEAF).then_some((axis, n / 2));
-        }
-        let mid = partition(items, |it| bin_of(it.centroid[axis]) <= best);
-        Some((axis, mid))
     }
 
     /// Visits the primitives whose boxes the ray meets in `(0, t_max)`, nearer subtrees
     /// first. `visit(i, t_max)` tests primitive `i` and returns the new, smaller `t_max`
     /// if it found a nearer hit; boxes beyond the current `t_max` are skipped.
+    ///
+    /// At an interior node both children's boxes are tested; the ray descends into the
+    /// one it enters first and stacks the other with its entry distance, so a stacked
+    /// subtree that a later hit has moved out of reach is dropped without another test.
     #[inline]
-    pub fn traverse(&self, ray: &Ray<F>, mut t_max: F, mut visit: impl FnMut(usize, F) -> Option<F>) {
-        if self.nodes.is_empty() {
+    pub fn traverse(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
+        // A small stack on the machine stack for every realistic tree; a deeper one (only
+        // from pathological inputs) gets a heap stack.
+        const INLINE: usize = 32;
+        if self.depth <= INLINE {
+            self.traverse_with(&mut [(0, F::zero()); INLINE], ray, t_max, visit);
+        } else {
+            self.traverse_with(&mut vec![(0, F::zero()); self.depth], ray, t_max, visit);
+        }
+    }
+
+    /// [`Bvh::traverse`] with a stack of at least `self.depth` entries.
+    #[inline]
+    fn traverse_with(
+        &self,
+        stack: &mut [(u32, F)],
+        ray: &Ray<F>,
+        mut t_max: F,
+        mut visit: impl FnMut(usize, F) -> Option<F>,
+    ) {
+        let test = RayBoxTest::new(ray);
+        let Some(root) = self.nodes.first() else {
+            return;
+        };
+        if test.entry(&root.bounds, t_max).is_none() {
             return;
         }
-        let inv_d = ray.direction.map(|d| F::one() / d);
-        let neg = [inv_d.x < F::zero(), inv_d.y < F::zero(), inv_d.z < F::zero()];
-        let mut stack = [0u32; STACK];
         let mut top = 0;
-        let mut node = 0usize;
+        let mut n = root;
         loop {
-            let n = &self.nodes[node];
-            if n.bounds.hit(ray, inv_d, t_max) {
-                if n.count > 0 {
-                    let start = n.offset as usize;
-                    for &i in &self.indices[start..start + n.count as usize] {
-                        if let Some(t) = visit(i as usize, t_max) {
-                            t_max = t;
-                        }
+            if n.count > 0 {
+                let start = n.offset as usize;
+                for &i in &self.indices[start..start + n.count as usize] {
+                    if let Some(t) = visit(i as usize, t_max) {
+                        t_max = t;
                     }
-                } else if neg[n.axis as usize] {
-                    stack[top] = node as u32 + 1;
-                    top += 1;
-                    node = n.offset as usize;
-                    continue;
-                } else {
-                    stack[top] = n.offset;
-                    top += 1;
-                    node += 1;
-                    continue;
+                }
+            } else {
+                let left = n.offset as usize;
+                let [l, r] = &self.nodes[left..left + 2] else {
+                    unreachable!("interior nodes have two children")
+                };
+                match (test.entry(&l.bounds, t_max), test.entry(&r.bounds, t_max)) {
+                    (Some(a), Some(b)) => {
+                        let (near, far, t_far) = if b < a { (r, left, a) } else { (l, left + 1, b) };
+                        stack[top] = (far as u32, t_far);
+                        top += 1;
+                        n = near;
+                        continue;
+                    }
+                    (Some(_), None) => {
+                        n = l;
+                        continue;
+                    }
+                    (None, Some(_)) => {
+                        n = r;
+                        continue;
+                    }
+                    (None, None) => {}
                 }
             }
-            if top == 0 {
-                return;
+            // Pop the next stacked subtree still within reach.
+            loop {
+                if top == 0 {
+                    return;
+                }
+                top -= 1;
+                let (next, t_entry) = stack[top];
+                if t_entry <= t_max {
+                    n = &self.nodes[next as usize];
+                    break;
+                }
             }
-            top -= 1;
-            node = stack[top] as usize;
         }
     }
 
@@ -222,6 +275,12 @@ impl<F: Float> Bvh<F> {
         });
         found
     }
+}
+
+/// The bin of a centroid coordinate in `[lo, hi]`, `lo < hi`.
+fn binner<F: Float>(lo: F, hi: F) -> impl Fn(F) -> usize {
+    let scale = lit::<F>(BINS as f64) / (hi - lo);
+    move |c: F| ((c - lo) * scale).to_f64().clamp(0.0, (BINS - 1) as f64) as usize
 }
 
 /// Splits at the median centroid along the longest axis (a leaf for `MAX_LEAF` or fewer).
@@ -290,9 +349,8 @@ mod tests {
                 continue;
             };
             let ray = Ray::new(o, d);
-            let inv = d.map(|x| 1.0 / x);
             let mut want: Vec<usize> = (0..boxes.len())
-                .filter(|&i| boxes[i].hit(&ray, inv, f64::INFINITY))
+                .filter(|&i| boxes[i].hit(&ray, f64::INFINITY))
                 .collect();
             let mut got = Vec::new();
             bvh.traverse(&ray, f64::INFINITY, |i, _| {
