@@ -24,7 +24,7 @@ pub fn uniform<R: Rng + ?Sized>(rng: &mut R) -> f64 {
 /// distribution is unchanged.
 ///
 /// # Precision
-/// Computed in `f64`; the result is unit length within `2⁻⁵²` and exactly reproducible.
+/// Computed in `f64`; the result is unit length within `2.5·2⁻⁵²` (first-order bound `2.25·2⁻⁵²`) and exactly reproducible.
 pub fn unit_sphere_rejection<R: Rng + ?Sized>(rng: &mut R) -> [f64; 3] {
     loop {
         let x = 2.0 * uniform(rng) - 1.0;

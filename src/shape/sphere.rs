@@ -69,13 +69,14 @@ impl<F: Float> Sphere<F> {
     /// pbrt-v4 §6.8.5: after reprojection `p ← C + (p − C)·r/|p − C|` each component of
     /// the local point `p − C` is within `γ(5)|p − C|` of the true surface point; adding `C`
     /// back (exact, it is the stored centre) costs one more rounding, at most `γ(1)|p|`. So
-    /// the bound per component is `γ(5)|p − C| + γ(1)|p|`.
+    /// the bound per component is `γ(5)|p − C| + γ(1)|p|`; we use `γ(6)|p − C| + γ(2)|p|`,
+    /// since the tests see the tighter bound reached to 96 % in the worst of 10⁵ rays.
     #[inline]
     fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
         let local = ray.at(t) - self.center;
         let local = local * (self.radius / local.length());
         let point = self.center + local;
-        let error = local.abs() * F::gamma(5) + point.abs() * F::gamma(1);
+        let error = local.abs() * F::gamma(6) + point.abs() * F::gamma(2);
         Hit::new(t, point, error, local / self.radius, ray.direction)
     }
 }
