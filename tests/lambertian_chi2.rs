@@ -37,7 +37,7 @@ mod common;
 use common::*;
 use rand::SeedableRng;
 use rand::rngs::Xoshiro256PlusPlus;
-use raytrace::sampling::{lambertian_direction, uniform, unit_sphere_rejection};
+use raytrace::sampling::{cosine_direction, lambertian_direction, uniform, unit_sphere_rejection};
 use raytrace::{Float, Vec3, lit};
 use std::f64::consts::{PI, TAU};
 
@@ -188,6 +188,14 @@ fn lambertian_is_cosine_distributed<F: Float>(which: usize) {
     assert!(
         !good.rejected(),
         "{}: lambertian_direction about {n:?}: {good:?}",
+        F::NAME
+    );
+
+    // The closed-form alternative must pass the same test: it draws the same distribution.
+    let closed = cosine_test(n, seed ^ 0xC1, |rng| cosine_direction(n, rng));
+    assert!(
+        !closed.rejected(),
+        "{}: cosine_direction about {n:?}: {closed:?}",
         F::NAME
     );
 
