@@ -91,7 +91,9 @@ fn samplers(c: &mut Criterion) {
     g.bench_function("lambertian-spec-tangent-sphere", |b| {
         b.iter(|| lambertian_direction(black_box(n), &mut rng))
     });
-    g.bench_function("lambertian-closed-form", |b| b.iter(|| cosine_direction(black_box(n), &mut rng)));
+    g.bench_function("lambertian-closed-form", |b| {
+        b.iter(|| cosine_direction(black_box(n), &mut rng))
+    });
     g.finish();
 }
 
