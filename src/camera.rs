@@ -22,6 +22,29 @@ pub trait Camera<F: Float> {
     fn ray(&self, x: F, y: F) -> Ray<F>;
 }
 
+/// A camera that can be rebuilt for another scalar, so one camera serves renders in every
+/// precision ([`crate::advice::advise`] renders a scene in several).
+pub trait CastCamera {
+    /// The camera in scalar `G`.
+    type In<G: Float>: Camera<G> + Sync;
+    /// Rebuilds the camera in scalar `G`.
+    fn cast<G: Float>(&self) -> Self::In<G>;
+}
+
+impl CastCamera for ScreenCamera {
+    type In<G: Float> = ScreenCamera;
+    fn cast<G: Float>(&self) -> ScreenCamera {
+        *self
+    }
+}
+
+impl<F: Float> CastCamera for LookAtCamera<F> {
+    type In<G: Float> = LookAtCamera<G>;
+    fn cast<G: Float>(&self) -> LookAtCamera<G> {
+        LookAtCamera::cast(self)
+    }
+}
+
 impl<F: Float, C: Camera<F> + ?Sized> Camera<F> for &C {
     fn width(&self) -> usize {
         (**self).width()

@@ -25,6 +25,12 @@ pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + '
     /// This value rounded to the nearest `f64` (exact for `f32` and `f64`).
     fn to_f64(self) -> f64;
 
+    /// The machine epsilon: the gap between 1 and the next representable value, `2u` for
+    /// the unit roundoff `u` of the arithmetic. Use this, not `num_traits::Float::epsilon`,
+    /// which `twofloat` defines as the smallest positive `f64` (so every error bound
+    /// derived from it would be zero).
+    fn eps() -> Self;
+
     /// The smallest representable value greater than `self` (identity for NaN and +∞).
     fn next_up(self) -> Self;
 
@@ -39,7 +45,7 @@ pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + '
     /// (Higham, *Accuracy and Stability of Numerical Algorithms*, lemma 3.1).
     #[inline]
     fn gamma(n: u32) -> Self {
-        let nu = Self::from_f64(f64::from(n)) * Self::epsilon() * Self::from_f64(0.5);
+        let nu = Self::from_f64(f64::from(n)) * Self::eps() * Self::from_f64(0.5);
         nu / (Self::one() - nu)
     }
 }
@@ -59,6 +65,10 @@ impl Float for f32 {
     #[inline]
     fn to_f64(self) -> f64 {
         f64::from(self)
+    }
+    #[inline]
+    fn eps() -> Self {
+        f32::EPSILON
     }
     #[inline]
     fn next_up(self) -> Self {
@@ -81,6 +91,10 @@ impl Float for f64 {
         self
     }
     #[inline]
+    fn eps() -> Self {
+        f64::EPSILON
+    }
+    #[inline]
     fn next_up(self) -> Self {
         f64::next_up(self)
     }
@@ -100,17 +114,22 @@ impl Float for twofloat::TwoFloat {
     fn to_f64(self) -> f64 {
         self.hi() + self.lo()
     }
+    /// `2⁻¹⁰⁰`: double-double addition and multiplication are accurate to about `2⁻¹⁰⁴`
+    /// relative, division and square root to a few bits less (Joldes, Muller, Popescu
+    /// 2017), so `2⁻¹⁰⁰` keeps the error bounds built on it conservative.
+    #[inline]
+    fn eps() -> Self {
+        Self::from_f64(2f64.powi(-100))
+    }
     /// Steps by one unit in the last place of the double-double (`|x|·ε`, at
     /// least the smallest positive `f64`); enough for ray offsets, which only
     /// need a value strictly on the far side.
     fn next_up(self) -> Self {
-        let step =
-            (self.abs() * <Self as num_traits::Float>::epsilon()).max(Self::from_f64(f64::from_bits(1)));
+        let step = (self.abs() * Self::eps()).max(Self::from_f64(f64::from_bits(1)));
         self + step
     }
     fn next_down(self) -> Self {
-        let step =
-            (self.abs() * <Self as num_traits::Float>::epsilon()).max(Self::from_f64(f64::from_bits(1)));
+        let step = (self.abs() * Self::eps()).max(Self::from_f64(f64::from_bits(1)));
         self - step
     }
 }
@@ -139,7 +158,8 @@ mod tests {
         let u = f64::EPSILON / 2.0;
         assert_eq!(<f64 as Float>::gamma(3), 3.0 * u / (1.0 - 3.0 * u));
         assert!(<f32 as Float>::gamma(5) > 5.0 * f32::EPSILON / 2.0);
-        assert!(<TwoFloat as Float>::gamma(5).to_f64() < 1e-30);
+        let g = <TwoFloat as Float>::gamma(5).to_f64();
+        assert!(g > 1e-31 && g < 1e-29, "double-double γ(5) = {g}: its epsilon must be ~2⁻¹⁰⁰, not twofloat's MIN_POSITIVE");
     }
 
     #[test]

@@ -30,15 +30,18 @@
 #![warn(missing_docs)]
 
 pub mod aabb;
+pub mod advice;
 pub mod background;
 pub mod bvh;
 pub mod camera;
+mod cast;
 pub mod cli;
 pub mod error;
 pub mod float;
 pub mod image;
 pub mod light;
 pub mod material;
+pub mod metrics;
 pub mod optics;
 pub mod ray;
 pub mod render;
@@ -49,7 +52,8 @@ mod validate;
 pub mod vec3;
 
 pub use background::Background;
-pub use camera::{Camera, LookAtCamera, ScreenCamera};
+pub use camera::{Camera, CastCamera, LookAtCamera, ScreenCamera};
+pub use cli::Precision;
 pub use error::{Error, Result};
 pub use float::{Float, lit};
 pub use image::{Encoding, Image, Image16};

@@ -50,7 +50,7 @@ pub fn unit_sphere_rejection<R: Rng + ?Sized>(rng: &mut R) -> [f64; 3] {
 /// probability is `< 16ε` (`2·10⁻⁶` in f32): no NaN, no direction below the surface,
 /// and no bias a test could detect.
 pub fn lambertian_direction<F: Float, R: Rng + ?Sized>(n: Vec3<F>, rng: &mut R) -> Vec3<F> {
-    let tiny = F::epsilon() * lit(64.0);
+    let tiny = F::eps() * lit(64.0);
     loop {
         let [x, y, z] = unit_sphere_rejection(rng);
         let d = n + Vec3::new(lit(x), lit(y), lit(z));

@@ -85,6 +85,11 @@ impl<F: Float, S, M> Scene<F, S, M> {
         }
     }
 
+    /// How the scene is intersected.
+    pub fn acceleration(&self) -> Acceleration {
+        self.acceleration
+    }
+
     /// Chooses how the scene is intersected (the default is [`Acceleration::Auto`]).
     pub fn set_acceleration(&mut self, acceleration: Acceleration) -> &mut Self {
         self.acceleration = acceleration;

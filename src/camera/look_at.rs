@@ -68,6 +68,20 @@ impl<F: Float> LookAtCamera<F> {
     }
 }
 
+impl<F: Float> LookAtCamera<F> {
+    /// The same camera in scalar `G` (its frame rounded through `f64`).
+    pub fn cast<G: Float>(&self) -> LookAtCamera<G> {
+        LookAtCamera {
+            width: self.width,
+            height: self.height,
+            origin: self.origin.cast(),
+            forward: self.forward.cast(),
+            right: self.right.cast(),
+            up: self.up.cast(),
+        }
+    }
+}
+
 impl<F: Float> Camera<F> for LookAtCamera<F> {
     fn width(&self) -> usize {
         self.width

@@ -50,6 +50,11 @@ impl<F: Float> Lambertian<F> {
     pub fn albedo(&self) -> Color<F> {
         self.albedo
     }
+
+    /// How directions are drawn.
+    pub fn sampler(&self) -> CosineSampler {
+        self.sampler
+    }
 }
 
 impl<F: Float, R: Rng + ?Sized> Material<F, R> for Lambertian<F> {

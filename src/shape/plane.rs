@@ -153,7 +153,7 @@ mod tests {
             .hit(&ray(&[3.0, 1.0, -10.0], &[0.0, 0.6, 0.8]), F::infinity())
             .unwrap();
         assert!(
-            (h.t - lit(7.5)).abs() <= lit::<F>(7.5) * F::epsilon(),
+            (h.t - lit(7.5)).abs() <= lit::<F>(7.5) * F::eps(),
             "{}: t = {}",
             F::NAME,
             h.t

@@ -197,7 +197,7 @@ impl<F: Float> Triangle<F> {
 /// so the edge functions can be recomputed there with their exact sign.
 #[inline]
 fn products_exact_in_f64<F: Float>() -> bool {
-    F::epsilon().to_f64() >= f64::EPSILON.sqrt()
+    F::eps().to_f64() >= f64::EPSILON.sqrt()
 }
 
 impl<F: Float> Hittable<F> for Triangle<F> {
@@ -254,10 +254,10 @@ mod tests {
         assert_eq!(tri.normal(), v(0.0, 0.0, 1.0), "{}", F::NAME);
         let (t, b) = tri.intersect(&down(0.0, 0.0), F::infinity()).unwrap();
         assert_eq!(t, lit(5.0), "{}", F::NAME);
-        assert!((b[0] + b[1] + b[2] - F::one()).abs() <= lit::<F>(4.0) * F::epsilon());
+        assert!((b[0] + b[1] + b[2] - F::one()).abs() <= lit::<F>(4.0) * F::eps());
         for (bi, want) in b.into_iter().zip([0.25, 0.25, 0.5]) {
             assert!(
-                (bi - lit(want)).abs() <= lit::<F>(4.0) * F::epsilon(),
+                (bi - lit(want)).abs() <= lit::<F>(4.0) * F::eps(),
                 "{}: {b:?}",
                 F::NAME
             );
@@ -313,7 +313,7 @@ mod tests {
                     .all(|h| h.t == lit(2.0) && h.point == v(x, y, -2.0))
             );
         }
-        for hair in [F::epsilon(), F::min_positive_value()] {
+        for hair in [F::eps(), F::min_positive_value()] {
             for sign in [F::one(), -F::one()] {
                 let r = Ray::new(Vec3::new(lit(0.5), hair * sign, F::zero()), v(0.0, 0.0, -1.0));
                 assert_eq!(hits(&r).len(), 1, "{}: {:?}", F::NAME, r.origin);
