@@ -159,7 +159,10 @@ mod tests {
         assert_eq!(<f64 as Float>::gamma(3), 3.0 * u / (1.0 - 3.0 * u));
         assert!(<f32 as Float>::gamma(5) > 5.0 * f32::EPSILON / 2.0);
         let g = <TwoFloat as Float>::gamma(5).to_f64();
-        assert!(g > 1e-31 && g < 1e-29, "double-double γ(5) = {g}: its epsilon must be ~2⁻¹⁰⁰, not twofloat's MIN_POSITIVE");
+        assert!(
+            g > 1e-31 && g < 1e-29,
+            "double-double γ(5) = {g}: its epsilon must be ~2⁻¹⁰⁰, not twofloat's MIN_POSITIVE"
+        );
     }
 
     #[test]
