@@ -7,6 +7,7 @@
 
 use crate::camera::CastCamera;
 use crate::cli::Precision;
+use crate::double_double::DoubleDouble;
 use crate::error::Result;
 use crate::float::Float;
 use crate::image::{Encoding, Image};
@@ -14,7 +15,6 @@ use crate::metrics::ImageError;
 use crate::render::{RenderSettings, render};
 use crate::scene::EnumScene;
 use std::time::Duration;
-use twofloat::TwoFloat;
 
 /// One scalar's render of the scene, measured against the reference.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,7 +50,7 @@ pub fn advise<C: CastCamera>(
     camera: &C,
     settings: &RenderSettings,
 ) -> Result<Advice> {
-    let (reference, _) = render_in::<TwoFloat, C>(scene, camera, settings)?;
+    let (reference, _) = render_in::<DoubleDouble, C>(scene, camera, settings)?;
     let trial = |(image, time): (Image, Duration)| -> Result<Trial> {
         Ok(Trial {
             error: ImageError::between(&image, &reference, Encoding::Srgb)?,

@@ -104,8 +104,11 @@ impl Float for f64 {
     }
 }
 
+/// `twofloat`'s type compiles and renders, but its division is only `f64`-accurate (see
+/// [`DoubleDouble`](crate::double_double::DoubleDouble), which fixes it): use
+/// `DoubleDouble` for reference renders.
 impl Float for twofloat::TwoFloat {
-    const NAME: &'static str = "dd";
+    const NAME: &'static str = "twofloat";
     #[inline]
     fn from_f64(x: f64) -> Self {
         twofloat::TwoFloat::from(x)
@@ -134,6 +137,39 @@ impl Float for twofloat::TwoFloat {
     }
 }
 
+impl Float for crate::double_double::DoubleDouble {
+    const NAME: &'static str = "dd";
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        Self::from(x)
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self.hi() + self.lo()
+    }
+    /// `2⁻¹⁰⁰`: double-double addition and multiplication are accurate to about `2⁻¹⁰⁴`
+    /// relative, division to `15u²` (Joldes, Muller, Popescu 2017), square root a little
+    /// worse, so `2⁻¹⁰⁰` keeps the error bounds built on it conservative.
+    #[inline]
+    fn eps() -> Self {
+        Self::from(2f64.powi(-100))
+    }
+    fn next_up(self) -> Self {
+        let step = num_traits::Float::max(
+            num_traits::Float::abs(self) * Self::eps(),
+            Self::from(f64::from_bits(1)),
+        );
+        self + step
+    }
+    fn next_down(self) -> Self {
+        let step = num_traits::Float::max(
+            num_traits::Float::abs(self) * Self::eps(),
+            Self::from(f64::from_bits(1)),
+        );
+        self - step
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -151,6 +187,7 @@ mod tests {
         check_neighbours::<f32>();
         check_neighbours::<f64>();
         check_neighbours::<TwoFloat>();
+        check_neighbours::<crate::DoubleDouble>();
     }
 
     #[test]

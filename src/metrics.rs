@@ -22,10 +22,10 @@ impl ImageError {
     /// Whether at least 99 % of the pixels are within one 8-bit step of the reference:
     /// the criterion the precision advice uses.
     ///
-    /// Not the RMSE or the maximum: every mirror scene has a few chaotic pixels (rays
-    /// trapped between convex mirrors, where each bounce multiplies a deviation) whose
-    /// colour no finite precision gets right; they dominate RMSE and max in f64 as much
-    /// as in f32, while the share of pixels off tells the scalars apart.
+    /// Not the RMSE or the maximum: a handful of pixels (silhouette edges, rays trapped
+    /// between convex mirrors, where each bounce multiplies a deviation) can flip to a
+    /// different surface under any rounding change and dominate both, while the share of
+    /// pixels off measures how much of the picture a scalar changes.
     pub fn within_one_step(&self) -> bool {
         self.over_one_step <= 0.01
     }

@@ -159,7 +159,11 @@ fn any_seedable_generator_works() {
 fn every_scalar_renders_and_follows_one_random_stream() {
     let cam = ScreenCamera::new(32, 16).unwrap();
     let s = settings(2, 4);
-    let dd = render(&enum_scene::<TwoFloat>(), &cam, &s).unwrap().image;
+    let dd = render(&enum_scene::<raytrace::DoubleDouble>(), &cam, &s)
+        .unwrap()
+        .image;
+    let tf = render(&enum_scene::<TwoFloat>(), &cam, &s).unwrap().image;
+    assert!(tf.pixels().iter().flatten().all(|c| c.is_finite() && *c >= 0.0));
     let f64_ = render(&enum_scene::<f64>(), &cam, &s).unwrap().image;
     let f32_ = render(&enum_scene::<f32>(), &cam, &s).unwrap().image;
     // Same draws: the images agree almost everywhere; a path can differ only where
