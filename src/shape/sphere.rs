@@ -49,15 +49,20 @@ impl<F: Float> Sphere<F> {
     pub fn roots(&self, ray: &Ray<F>) -> Option<(F, F)> {
         let f = ray.origin - self.center;
         let b = f.dot(ray.direction);
+        let c = f.length_squared() - self.radius * self.radius;
+        self.roots_from(ray, f, b, c)
+    }
+
+    /// [`Sphere::roots`] from `f = O − C`, `b = f·D` and `c = |f|² − r²`.
+    #[inline(always)]
+    fn roots_from(&self, ray: &Ray<F>, f: Vec3<F>, b: F, c: F) -> Option<(F, F)> {
         let l = f - ray.direction * b;
-        let r2 = self.radius * self.radius;
-        let disc = r2 - l.length_squared();
+        let disc = self.radius * self.radius - l.length_squared();
         if disc < F::zero() {
             return None;
         }
         let sqrt_d = disc.sqrt();
         let q = if b > F::zero() { -b - sqrt_d } else { -b + sqrt_d };
-        let c = f.length_squared() - r2;
         let other = if q == F::zero() { F::zero() } else { c / q };
         Some(if q < other { (q, other) } else { (other, q) })
     }
@@ -84,7 +89,15 @@ impl<F: Float> Sphere<F> {
 impl<F: Float> Hittable<F> for Sphere<F> {
     #[inline]
     fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        let (t0, t1) = self.roots(ray)?;
+        let f = ray.origin - self.center;
+        let b = f.dot(ray.direction);
+        let c = f.length_squared() - self.radius * self.radius;
+        // Outside (c > 0) and heading away (b > 0): both roots are negative. Most
+        // spheres of a scene are behind most rays, so this cheap exit pays.
+        if c > F::zero() && b > F::zero() {
+            return None;
+        }
+        let (t0, t1) = self.roots_from(ray, f, b, c)?;
         let t = if t0 > F::zero() { t0 } else { t1 };
         (t > F::zero() && t < t_max).then(|| self.hit_at(ray, t))
     }
