@@ -6,9 +6,9 @@ mod scenes;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use rand::SeedableRng;
-use raytrace::DefaultRng;
 use raytrace::prelude::*;
 use raytrace::render::Tracer;
+use raytrace::{Acceleration, DefaultRng};
 use std::hint::black_box;
 use std::sync::Arc;
 
@@ -85,7 +85,62 @@ fn dispatch<F: Float>(c: &mut Criterion) {
     g.finish();
 }
 
+/// `n` random small spheres (matte and mirror) in front of the spec's camera.
+fn spheres(n: usize) -> EnumScene<f32> {
+    use rand::RngExt;
+    let mut rng = DefaultRng::seed_from_u64(n as u64);
+    let mut scene = EnumScene::new(Background::default());
+    for i in 0..n {
+        let c = Vec3::new(
+            rng.random_range(-3.0..3.0),
+            rng.random_range(-1.5..1.5),
+            rng.random_range(-8.0..-3.0),
+        );
+        let m: MaterialKind<f32> = if i % 2 == 0 {
+            Lambertian::new(Vec3::new(0.7, 0.5, 0.3)).unwrap().into()
+        } else {
+            Mirror::new(Vec3::splat(0.8)).unwrap().into()
+        };
+        scene.add(Sphere::new(c, rng.random_range(0.1..0.6)).unwrap(), m);
+    }
+    scene
+}
+
+/// Where the BVH starts to pay: the same scene of `n` spheres, plain loop against BVH.
+fn bvh_threshold(c: &mut Criterion) {
+    let mut g = c.benchmark_group("bvh-threshold-160x80-2spp");
+    g.sample_size(10);
+    let cam = ScreenCamera::new(160, 80).unwrap();
+    let s = RenderSettings::new(2, 10, 0).unwrap();
+    for n in [1, 2, 4, 6, 8, 12, 16, 32, 64] {
+        for (name, acc) in [("loop", Acceleration::Linear), ("bvh", Acceleration::Bvh)] {
+            let mut scene = spheres(n);
+            scene.set_acceleration(acc);
+            g.bench_function(BenchmarkId::new(name, n), |b| {
+                b.iter(|| single(|| render(&scene, &cam, &s).unwrap().stats.rays))
+            });
+        }
+    }
+    g.finish();
+    let mut g = c.benchmark_group("bvh-or-loop-spec-scenes-160x80-2spp");
+    g.sample_size(10);
+    for (name, scene) in [
+        ("four_mirrors", scenes::four_mirrors::<f32>().unwrap()),
+        ("matte_spheres", scenes::matte_spheres::<f32>().unwrap()),
+    ] {
+        for (how, acc) in [("loop", Acceleration::Linear), ("bvh", Acceleration::Bvh)] {
+            let mut scene = scene.clone();
+            scene.set_acceleration(acc);
+            g.bench_function(BenchmarkId::new(how, name), |b| {
+                b.iter(|| single(|| render(&scene, &cam, &s).unwrap().stats.rays))
+            });
+        }
+    }
+    g.finish();
+}
+
 fn all(c: &mut Criterion) {
+    bvh_threshold(c);
     small_renders::<f32>(c);
     small_renders::<f64>(c);
     one_path::<f32>(c);
