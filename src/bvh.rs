@@ -2,10 +2,13 @@
 //! ordered stack traversal. It only indexes primitives by their boxes; the scene owns
 //! the primitives and tests them in the callbacks.
 
+mod wide;
+
 use crate::aabb::{Aabb, RayBoxTest};
 use crate::float::{Float, lit};
 use crate::ray::Ray;
 use crate::vec3::Vec3;
+use wide::{Child, Wide};
 
 /// Most primitives a leaf may hold.
 const MAX_LEAF: usize = 4;
@@ -34,8 +37,14 @@ struct Node<F> {
 pub struct Bvh<F> {
     nodes: Vec<Node<F>>,
     indices: Vec<u32>,
-    /// Levels below the root: the most subtrees a traversal can have stacked.
+    /// Levels below the root of the binary tree.
     depth: usize,
+    /// The same tree collapsed to four children per node, which the traversal runs on.
+    wide: Vec<Wide<F>>,
+    /// The wide tree's root (`None` for an empty hierarchy).
+    root: Option<Child>,
+    /// Levels below the wide root.
+    wide_depth: usize,
 }
 
 struct Item<F> {
@@ -65,6 +74,9 @@ impl<F: Float> Bvh<F> {
             nodes: Vec::with_capacity(2 * bounds.len()),
             indices: Vec::with_capacity(bounds.len()),
             depth: 0,
+            wide: Vec::new(),
+            root: None,
+            wide_depth: 0,
         };
         if !items.is_empty() {
             bvh.nodes.push(Node {
@@ -73,6 +85,16 @@ impl<F: Float> Bvh<F> {
                 count: 0,
             });
             bvh.build_node(0, &mut items, 0);
+            let root = bvh.nodes[0];
+            bvh.root = Some(if root.count > 0 {
+                Child::Leaf {
+                    first: root.offset,
+                    count: root.count,
+                }
+            } else {
+                Child::Node(wide::collapse(&bvh.nodes, 0, &mut bvh.wide))
+            });
+            bvh.wide_depth = wide::depth(&bvh.wide, bvh.root);
         }
         bvh
     }
@@ -185,8 +207,19 @@ impl<F: Float> Bvh<F> {
     /// subtree that a later hit has moved out of reach is dropped without another test.
     #[inline]
     pub fn traverse(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
-        // A small stack on the machine stack for every realistic tree; a deeper one (only
-        // from pathological inputs) gets a heap stack.
+        // Each wide level stacks at most four children, one of which is popped at once.
+        const INLINE: usize = 48;
+        let need = 3 * self.wide_depth + 4;
+        if need <= INLINE {
+            self.traverse_wide(&mut [(Child::Empty, F::zero()); INLINE], ray, t_max, visit);
+        } else {
+            self.traverse_wide(&mut vec![(Child::Empty, F::zero()); need], ray, t_max, visit);
+        }
+    }
+
+    /// The binary traversal (kept to compare against the wide one in tests and benches).
+    #[inline]
+    pub fn traverse_binary(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
         const INLINE: usize = 32;
         if self.depth <= INLINE {
             self.traverse_with(&mut [(0, F::zero()); INLINE], ray, t_max, visit);
@@ -357,9 +390,16 @@ mod tests {
                 got.push(i);
                 None
             });
+            let mut binary = Vec::new();
+            bvh.traverse_binary(&ray, f64::INFINITY, |i, _| {
+                binary.push(i);
+                None
+            });
             got.sort();
             want.sort();
+            binary.sort();
             assert_eq!(got, want);
+            assert_eq!(binary, want);
             assert_eq!(bvh.any(&ray, f64::INFINITY, |_| true), !want.is_empty());
         }
     }
