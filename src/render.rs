@@ -184,7 +184,8 @@ where
         let ray = camera.ray(px + lit(dx), py + lit(dy));
         sum = sum + tracer.trace(&ray, 0, rng);
     }
-    sum / lit(f64::from(spp))
+    // Each sample is finite, but their sum may overflow: cap the mean again.
+    trace::saturate(sum / lit(f64::from(spp)))
 }
 
 /// A progress bar on stderr (work done, rate, time left), hidden unless asked for and

@@ -91,16 +91,22 @@ impl<F: Float> Vec3<F> {
         self / len
     }
 
-    /// `v / |v|`, or `None` when `|v|` is zero, subnormal-small (below `√min_positive`,
-    /// where `|v|²` underflows), or not finite.
+    /// `v / |v|`, or `None` when `v` is zero or not finite.
+    ///
+    /// Vectors whose `|v|²` overflows or underflows are first divided by their largest
+    /// component, so every finite non-zero vector normalises.
     #[inline]
     pub fn try_normalize(self) -> Option<Self> {
         let len2 = self.length_squared();
         if len2 >= F::min_positive_value() && len2.is_finite() {
-            Some(self / len2.sqrt())
-        } else {
-            None
+            return Some(self / len2.sqrt());
         }
+        let m = self.abs().max_element();
+        if !(m > F::zero() && m.is_finite() && self.is_finite()) {
+            return None;
+        }
+        let scaled = self / m;
+        Some(scaled / scaled.length())
     }
 
     /// Component-wise absolute value.
@@ -260,9 +266,25 @@ mod tests {
         assert_eq!(v.normalize(), V::new(0.6, 0.0, 0.8));
         assert_eq!(v.try_normalize(), Some(V::new(0.6, 0.0, 0.8)));
         assert_eq!(V::zero().try_normalize(), None);
-        assert_eq!(V::splat(1e-200).try_normalize(), None);
+        // |v|² underflows but v is not zero: still normalises.
+        assert_eq!(
+            V::new(0.0, 1e-200, 0.0).try_normalize(),
+            Some(V::new(0.0, 1.0, 0.0))
+        );
         assert_eq!(V::new(f64::NAN, 0.0, 1.0).try_normalize(), None);
         assert_eq!(V::new(f64::INFINITY, 0.0, 1.0).try_normalize(), None);
-        assert!(Vec3::<f32>::splat(1e-20).try_normalize().is_none());
+        // |v|² overflows but v is finite: still normalises.
+        assert_eq!(
+            V::new(3e300, 0.0, 4e300).try_normalize(),
+            Some(V::new(0.6, 0.0, 0.8))
+        );
+        assert_eq!(
+            Vec3::<f32>::new(1e20, 0.0, 0.0).try_normalize(),
+            Some(Vec3::new(1.0, 0.0, 0.0))
+        );
+        assert_eq!(
+            Vec3::<f32>::new(0.0, 0.0, -1e-40).try_normalize(),
+            Some(Vec3::new(0.0, 0.0, -1.0))
+        );
     }
 }

@@ -44,10 +44,17 @@ impl<F: Float> LookAtCamera<F> {
         let from = validate::finite_vec("camera position", from)?;
         let at = validate::finite_vec("camera target", at)?;
         let w = validate::direction("camera view direction (from − at)", from - at)?;
-        let up = validate::finite_vec("camera up vector", up)?;
-        let u = up.cross(w).try_normalize().ok_or_else(|| {
-            Error::invalid("camera up vector", "must not be parallel to the view direction")
-        })?;
+        let up = validate::direction("camera up vector", up)?;
+        // Both unit: |up × w| is the sine of their angle, and below γ(6) the frame would be
+        // built from rounding noise (the same relative test as a degenerate triangle).
+        let side = up.cross(w);
+        if side.length().partial_cmp(&F::gamma(6)) != Some(std::cmp::Ordering::Greater) {
+            return Err(Error::invalid(
+                "camera up vector",
+                "must not be parallel to the view direction",
+            ));
+        }
+        let u = side.normalize();
         let v = w.cross(u);
         if !(vfov > F::zero() && vfov < lit(180.0)) {
             return Err(Error::invalid(

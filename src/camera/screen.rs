@@ -38,7 +38,7 @@ impl ScreenCamera {
     /// has no "outermost centres" to span 2 units between), or if the image would
     /// have more than 2³² pixels.
     pub fn new(width: usize, height: usize) -> Result<Self> {
-        if height < 2 || width != 2 * height {
+        if height < 2 || height.checked_mul(2) != Some(width) {
             return Err(Error::InvalidSettings(format!(
                 "the spec's camera needs a 2:1 image at least 4×2 (width = 2·height), got {width}×{height}"
             )));

@@ -8,6 +8,16 @@ use crate::shape::{Hit, Hittable};
 use crate::vec3::Color;
 use rand::Rng;
 
+/// Caps each channel at the largest finite value. A light almost touching a surface can
+/// make `I·cos θ/d²` overflow (in f32 from `d ≈ 10⁻¹⁹`); an infinite channel would then
+/// turn into NaN at the next zero albedo (`0·∞`). Capped, it stays finite and simply
+/// saturates the pixel. A NaN (which only a broken user material can make) is kept, not
+/// hidden: the comparison fails for it.
+#[inline]
+pub(crate) fn saturate<F: Float>(c: Color<F>) -> Color<F> {
+    c.map(|x| if x > F::max_value() { F::max_value() } else { x })
+}
+
 /// Traces rays through one scene and counts them.
 pub struct Tracer<'a, F, S, M> {
     scene: &'a Scene<F, S, M>,
@@ -52,10 +62,11 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
             Some(albedo) if !self.scene.lights().is_empty() => self.direct_light(&hit, albedo),
             _ => Color::zero(),
         };
-        match material.scatter(ray, &hit, rng) {
+        let colour = match material.scatter(ray, &hit, rng) {
             Some(s) => direct + s.attenuation * self.trace(&hit.spawn(s.direction), depth + 1, rng),
             None => direct,
-        }
+        };
+        saturate(colour)
     }
 
     /// Light arriving straight from the point lights at a matte hit with albedo `A`:

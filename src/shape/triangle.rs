@@ -36,23 +36,41 @@ impl<F: Float> Triangle<F> {
     /// `uⱼvₖ − uₖvⱼ` (with `u = B − A`, `v = C − A` rounded) is within
     /// `γ(4)·(|uⱼvₖ| + |uₖvⱼ|)`, and the vector of those bounds has length at most
     /// `√2·γ(4)·|u||v| < γ(6)·|u||v|`. Below it the computed normal's direction is
-    /// rounding noise. A triangle whose `|u×v|²` underflows or overflows in `F` is
-    /// rejected too: its normal cannot be computed.
+    /// rounding noise. The test runs on `u` and `v` divided by their largest components
+    /// (it is scale-free), so neither very long nor very short edges overflow it; an edge
+    /// that is not finite (`B − A` overflowing) is rejected.
     pub fn new(a: Vec3<F>, b: Vec3<F>, c: Vec3<F>) -> Result<Self> {
         for v in [a, b, c] {
             validate::finite_vec("triangle", v)?;
         }
         let (u, v) = (b - a, c - a);
-        let cross = u.cross(v);
-        let threshold = F::gamma(6) * u.length() * v.length();
-        match cross.try_normalize() {
-            Some(normal) if cross.length() > threshold => Ok(Self { a, b, c, normal }),
-            _ => Err(Error::invalid(
+        // The test is scale-free, so run it on the edges divided by their largest
+        // components: long edges (|u|² overflowing) and short ones are judged alike.
+        let scaled = |e: Vec3<F>| {
+            let m = e.abs().max_element();
+            if m > F::zero() && m.is_finite() {
+                Some(e / m)
+            } else {
+                None
+            }
+        };
+        let (us, vs) = (scaled(u), scaled(v));
+        let (cross_len, threshold) = match (us, vs) {
+            (Some(us), Some(vs)) => (us.cross(vs).length(), F::gamma(6) * us.length() * vs.length()),
+            _ => (F::zero(), F::zero()),
+        };
+        let normal = match (us, vs) {
+            (Some(us), Some(vs)) if cross_len > threshold => us.cross(vs).try_normalize(),
+            _ => None,
+        };
+        match normal {
+            Some(normal) => Ok(Self { a, b, c, normal }),
+            None => Err(Error::invalid(
                 "triangle",
                 format!(
-                    "degenerate in {} (|(B − A)×(C − A)| = {:?} ≤ {threshold:?}): {a:?}, {b:?}, {c:?}",
-                    F::NAME,
-                    cross.length()
+                    "degenerate in {} (|(B − A)×(C − A)| ≤ γ(6)·|B − A|·|C − A| for the scaled edges: \
+                     {cross_len:?} ≤ {threshold:?}), or an edge is not finite: {a:?}, {b:?}, {c:?}",
+                    F::NAME
                 ),
             )),
         }
