@@ -54,34 +54,50 @@ fn as_dyn<F: Float>(scene: &EnumScene<F>) -> DynScene<F, DefaultRng> {
     let mut d = DynScene::new(*scene.background());
     for o in scene.objects() {
         let shape: Box<dyn Hittable<F> + Send + Sync> = match o.shape {
-            ShapeKind::Sphere(s) => Box::new(s) as Box<dyn Hittable<F> + Send + Sync>,
-            #[allow(unreachable_patterns)]
-            _ => unimplemented!("only spheres in the benched scenes"),
+            ShapeKind::Sphere(s) => Box::new(s),
+            ShapeKind::Plane(p) => Box::new(p),
+            ShapeKind::Triangle(t) => Box::new(t),
+            ShapeKind::TextbookSphere(s) => Box::new(s),
         };
         let material: Arc<dyn Material<F, DefaultRng> + Send + Sync> = match o.material {
             MaterialKind::Mirror(m) => Arc::new(m),
             MaterialKind::Lambertian(m) => Arc::new(m),
-            #[allow(unreachable_patterns)]
-            _ => unimplemented!("only mirrors and matte in the benched scenes"),
+            MaterialKind::Dielectric(m) => Arc::new(m),
         };
         d.add(shape, material);
     }
     d
 }
 
+/// The same scenes through both dispatch paths, one thread: the enum fast path against
+/// boxed trait objects (the spec's vector of smart pointers).
 fn dispatch<F: Float>(c: &mut Criterion) {
-    let mut g = c.benchmark_group("dispatch-matte_spheres-160x80-4spp");
+    let mut g = c.benchmark_group("dispatch");
     g.sample_size(10);
-    let cam = ScreenCamera::new(160, 80).unwrap();
-    let enum_scene = scenes::matte_spheres::<F>().unwrap();
-    let dyn_scene = as_dyn(&enum_scene);
-    let s = RenderSettings::new(4, 10, 0).unwrap();
-    g.bench_function(BenchmarkId::new(F::NAME, "enum"), |b| {
-        b.iter(|| single(|| render(&enum_scene, &cam, &s).unwrap().stats.rays))
-    });
-    g.bench_function(BenchmarkId::new(F::NAME, "dyn"), |b| {
-        b.iter(|| single(|| render(&dyn_scene, &cam, &s).unwrap().stats.rays))
-    });
+    let s4 = RenderSettings::new(4, 10, 0).unwrap();
+    let spec = ScreenCamera::new(160, 80).unwrap();
+    let matte = scenes::matte_spheres::<F>().unwrap();
+    let matte_dyn = as_dyn(&matte);
+    g.bench_function(
+        BenchmarkId::new(format!("{}/enum", F::NAME), "matte_spheres-160x80-4spp"),
+        |b| b.iter(|| single(|| render(&matte, &spec, &s4).unwrap().stats.rays)),
+    );
+    g.bench_function(
+        BenchmarkId::new(format!("{}/dyn", F::NAME), "matte_spheres-160x80-4spp"),
+        |b| b.iter(|| single(|| render(&matte_dyn, &spec, &s4).unwrap().stats.rays)),
+    );
+    let look = scenes::random_spheres_camera::<F>(160).unwrap();
+    let random = scenes::random_spheres::<F>(0).unwrap();
+    let random_dyn = as_dyn(&random);
+    let s2 = RenderSettings::new(2, 50, 0).unwrap();
+    g.bench_function(
+        BenchmarkId::new(format!("{}/enum", F::NAME), "random_spheres-160x90-2spp"),
+        |b| b.iter(|| single(|| render(&random, &look, &s2).unwrap().stats.rays)),
+    );
+    g.bench_function(
+        BenchmarkId::new(format!("{}/dyn", F::NAME), "random_spheres-160x90-2spp"),
+        |b| b.iter(|| single(|| render(&random_dyn, &look, &s2).unwrap().stats.rays)),
+    );
     g.finish();
 }
 
