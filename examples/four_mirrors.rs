@@ -6,24 +6,16 @@
 mod common;
 mod scenes;
 
-use raytrace::cli::{Options, Precision};
-use raytrace::prelude::*;
-
-fn run<F: Float>(o: &Options) -> raytrace::Result<raytrace::Render> {
-    let camera = ScreenCamera::with_width(o.width)?;
-    render(&scenes::four_mirrors::<F>()?, &camera, &common::settings(o)?)
-}
+use raytrace::cli::Options;
 
 fn main() -> std::process::ExitCode {
-    common::main(
+    common::spec_scene(
         common::Example {
             name: "four_mirrors",
             about: "Four mirror spheres with different albedos (the specification's minimum scene).",
             defaults: Options::defaults(800, 1, 10),
         },
-        |o| match o.precision {
-            Precision::F32 => run::<f32>(o),
-            Precision::F64 => run::<f64>(o),
-        },
+        scenes::four_mirrors,
+        scenes::four_mirrors,
     )
 }

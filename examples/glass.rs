@@ -6,24 +6,16 @@
 mod common;
 mod scenes;
 
-use raytrace::cli::{Options, Precision};
-use raytrace::prelude::*;
-
-fn run<F: Float>(o: &Options) -> raytrace::Result<raytrace::Render> {
-    let camera = ScreenCamera::with_width(o.width)?;
-    render(&scenes::glass::<F>()?, &camera, &common::settings(o)?)
-}
+use raytrace::cli::Options;
 
 fn main() -> std::process::ExitCode {
-    common::main(
+    common::spec_scene(
         common::Example {
             name: "glass",
             about: "Solid and hollow glass spheres (Snell's law, Schlick's reflectance) beside mirror and matte ones.",
             defaults: Options::defaults(800, 32, 20),
         },
-        |o| match o.precision {
-            Precision::F32 => run::<f32>(o),
-            Precision::F64 => run::<f64>(o),
-        },
+        scenes::glass,
+        scenes::glass,
     )
 }

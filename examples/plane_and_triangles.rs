@@ -6,28 +6,16 @@
 mod common;
 mod scenes;
 
-use raytrace::cli::{Options, Precision};
-use raytrace::prelude::*;
-
-fn run<F: Float>(o: &Options) -> raytrace::Result<raytrace::Render> {
-    let camera = ScreenCamera::with_width(o.width)?;
-    render(
-        &scenes::plane_and_triangles::<F>()?,
-        &camera,
-        &common::settings(o)?,
-    )
-}
+use raytrace::cli::Options;
 
 fn main() -> std::process::ExitCode {
-    common::main(
+    common::spec_scene(
         common::Example {
             name: "plane_and_triangles",
             about: "An infinite plane and triangles (a mirror pyramid and a matte tetrahedron) beside spheres.",
             defaults: Options::defaults(800, 32, 20),
         },
-        |o| match o.precision {
-            Precision::F32 => run::<f32>(o),
-            Precision::F64 => run::<f64>(o),
-        },
+        scenes::plane_and_triangles,
+        scenes::plane_and_triangles,
     )
 }

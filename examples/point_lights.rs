@@ -6,24 +6,16 @@
 mod common;
 mod scenes;
 
-use raytrace::cli::{Options, Precision};
-use raytrace::prelude::*;
-
-fn run<F: Float>(o: &Options) -> raytrace::Result<raytrace::Render> {
-    let camera = ScreenCamera::with_width(o.width)?;
-    render(&scenes::point_lights::<F>()?, &camera, &common::settings(o)?)
-}
+use raytrace::cli::Options;
 
 fn main() -> std::process::ExitCode {
-    common::main(
+    common::spec_scene(
         common::Example {
             name: "point_lights",
             about: "Matte spheres lit by three coloured point lights, with shadows, under a dim sky.",
             defaults: Options::defaults(800, 16, 10),
         },
-        |o| match o.precision {
-            Precision::F32 => run::<f32>(o),
-            Precision::F64 => run::<f64>(o),
-        },
+        scenes::point_lights,
+        scenes::point_lights,
     )
 }

@@ -3,9 +3,9 @@
 
 #![allow(dead_code)]
 
-use raytrace::Render;
-use raytrace::cli::{self, Command, Options};
+use raytrace::cli::{self, Command, Options, Precision};
 use raytrace::image::{write_png, write_ppm};
+use raytrace::{EnumScene, Render, ScreenCamera, render};
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -19,24 +19,29 @@ pub struct Example {
     pub defaults: Options,
 }
 
-/// Parses the command line, renders with `render` on the requested number of threads,
-/// writes `<out>/<name>.ppm` and `.png`, and prints where they went and what it cost.
-pub fn main(example: Example, render: impl FnOnce(&Options) -> raytrace::Result<Render> + Send) -> ExitCode {
-    let opts = match cli::parse(
-        example.name,
-        example.about,
-        example.defaults,
-        std::env::args().skip(1),
-    ) {
-        Ok(Command::Run(o)) => o,
+/// Parses the command line over the example's defaults. `Err` carries the exit code
+/// after printing the help (success) or the mistake (2).
+pub fn options(example: &Example) -> Result<Options, ExitCode> {
+    let args = std::env::args().skip(1);
+    match cli::parse(example.name, example.about, example.defaults.clone(), args) {
+        Ok(Command::Run(o)) => Ok(o),
         Ok(Command::Help(text)) => {
             println!("{text}");
-            return ExitCode::SUCCESS;
+            Err(ExitCode::SUCCESS)
         }
         Err(e) => {
             eprintln!("error: {e}");
-            return ExitCode::from(2);
+            Err(ExitCode::from(2))
         }
+    }
+}
+
+/// Parses the command line, renders with `render` on the requested number of threads,
+/// writes `<out>/<name>.ppm` and `.png`, and prints where they went and what it cost.
+pub fn main(example: Example, render: impl FnOnce(&Options) -> raytrace::Result<Render> + Send) -> ExitCode {
+    let opts = match options(&example) {
+        Ok(o) => o,
+        Err(code) => return code,
     };
     match run(example.name, &opts, render) {
         Ok(()) => ExitCode::SUCCESS,
@@ -45,6 +50,21 @@ pub fn main(example: Example, render: impl FnOnce(&Options) -> raytrace::Result<
             ExitCode::FAILURE
         }
     }
+}
+
+/// A scene built in one scalar.
+pub type Build<F> = fn() -> raytrace::Result<EnumScene<F>>;
+
+/// [`main`] for a scene seen by the spec's camera, given its builder in each scalar.
+pub fn spec_scene(example: Example, in_f32: Build<f32>, in_f64: Build<f64>) -> ExitCode {
+    main(example, |o| {
+        let camera = ScreenCamera::with_width(o.width)?;
+        let settings = settings(o)?;
+        match o.precision {
+            Precision::F32 => render(&in_f32()?, &camera, &settings),
+            Precision::F64 => render(&in_f64()?, &camera, &settings),
+        }
+    })
 }
 
 fn run(

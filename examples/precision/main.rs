@@ -8,6 +8,8 @@
 //! mirror scenes always use one ray per pixel centre and their own depth. `--precision`
 //! is accepted and ignored: the study runs every scalar.
 
+#[path = "../common/mod.rs"]
+mod common;
 #[path = "../scenes/mod.rs"]
 mod scenes;
 
@@ -15,7 +17,7 @@ mod cases;
 mod charts;
 
 use cases::{Cam, Case};
-use raytrace::cli::{self, Command, Options};
+use raytrace::cli::Options;
 use raytrace::metrics::ImageError;
 use raytrace::prelude::*;
 use raytrace::{Image, Render};
@@ -187,16 +189,14 @@ fn main() -> ExitCode {
     let mut defaults = Options::defaults(400, 4, 50);
     defaults.out = "report/figures".into();
     let about = "The accuracy study: f32 and f64, stable and textbook intersection, against a double-double reference.";
-    let o = match cli::parse("precision", about, defaults, std::env::args().skip(1)) {
-        Ok(Command::Run(o)) => o,
-        Ok(Command::Help(text)) => {
-            println!("{text}");
-            return ExitCode::SUCCESS;
-        }
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
+    let example = common::Example {
+        name: "precision",
+        about,
+        defaults,
+    };
+    let o = match common::options(&example) {
+        Ok(o) => o,
+        Err(code) => return code,
     };
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(o.threads.unwrap_or(0))
