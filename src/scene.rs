@@ -180,11 +180,16 @@ impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
         };
         match self.index() {
             None => {
-                for i in 0..self.objects.len() {
-                    if let Some(t) = test(i, nearest) {
-                        nearest = t;
+                // The plain loop, written over the objects themselves (no index, no
+                // bounds check): the spec's scenes spend most of their time here.
+                let mut best: Option<(Hit<F>, &M)> = None;
+                for o in &self.objects {
+                    if let Some(hit) = o.shape.hit(ray, nearest) {
+                        nearest = hit.t;
+                        best = Some((hit, &o.material));
                     }
                 }
+                return best;
             }
             Some(ix) => {
                 for &i in &ix.unbounded {
