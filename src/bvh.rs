@@ -208,7 +208,7 @@ impl<F: Float> Bvh<F> {
     #[inline]
     pub fn traverse(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
         // Each wide level stacks at most four children, one of which is popped at once.
-        const INLINE: usize = 48;
+        const INLINE: usize = 24;
         let need = 3 * self.wide_depth + 4;
         if need <= INLINE {
             self.traverse_wide(&mut [(Child::Empty, F::zero()); INLINE], ray, t_max, visit);

@@ -163,14 +163,18 @@ impl<F: Float> Bvh<F> {
                 Child::Node(i) => {
                     let n = &self.wide[i as usize];
                     let t = r.entries(n, t_max);
-                    // Stack the hit lanes farthest first, so the nearest comes off next.
-                    let mut order = [0usize, 1, 2, 3];
-                    order.sort_unstable_by(|&a, &b| {
-                        t[b].partial_cmp(&t[a]).unwrap_or(std::cmp::Ordering::Equal)
-                    });
-                    for lane in order {
+                    // Push the hit lanes so that the stack stays sorted farthest-first among
+                    // them (an insertion sort on the stack's top: usually one or two lanes),
+                    // and the nearest comes off next.
+                    let base = top;
+                    for lane in 0..4 {
                         if t[lane] < F::infinity() {
-                            stack[top] = (n.child[lane], t[lane]);
+                            let mut k = top;
+                            while k > base && stack[k - 1].1 < t[lane] {
+                                stack[k] = stack[k - 1];
+                                k -= 1;
+                            }
+                            stack[k] = (n.child[lane], t[lane]);
                             top += 1;
                         }
                     }
