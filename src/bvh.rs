@@ -404,6 +404,41 @@ mod tests {
         }
     }
 
+    /// Axis-aligned rays (zero direction components, infinite reciprocals) along the
+    /// faces and edges of boxes: the wide traversal must agree with the single-box test.
+    #[test]
+    fn axis_aligned_rays_on_faces() {
+        let boxes: Vec<Aabb<f32>> = (0..40)
+            .map(|i| {
+                let c = Vec3::new((i % 5) as f32, ((i / 5) % 4) as f32, -((i / 20) as f32) - 3.0);
+                Aabb::new(c, c + Vec3::splat(0.5))
+            })
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        for x in [0.0f32, 0.25, 0.5, 1.0, 2.5] {
+            for y in [0.0f32, 0.5, 1.0, 3.5] {
+                for d in [
+                    Vec3::new(0.0, 0.0, -1.0),
+                    Vec3::new(0.0, 0.0, 1.0),
+                    Vec3::new(1.0, 0.0, 0.0),
+                ] {
+                    let ray = Ray::new(Vec3::new(x, y, if d.z > 0.0 { -10.0 } else { 1.0 }), d);
+                    let mut want: Vec<usize> = (0..boxes.len())
+                        .filter(|&i| boxes[i].hit(&ray, f32::INFINITY))
+                        .collect();
+                    let mut got = Vec::new();
+                    bvh.traverse(&ray, f32::INFINITY, |i, _| {
+                        got.push(i);
+                        None
+                    });
+                    got.sort();
+                    want.sort();
+                    assert_eq!(got, want, "{ray:?}");
+                }
+            }
+        }
+    }
+
     #[test]
     fn empty_and_single() {
         let none = Bvh::<f32>::build(&[]);
