@@ -167,14 +167,14 @@ impl<F: Float> Bvh<F> {
                     // them (an insertion sort on the stack's top: usually one or two lanes),
                     // and the nearest comes off next.
                     let base = top;
-                    for lane in 0..4 {
-                        if t[lane] < F::infinity() {
+                    for (&child, &tl) in n.child.iter().zip(&t) {
+                        if tl < F::infinity() {
                             let mut k = top;
-                            while k > base && stack[k - 1].1 < t[lane] {
+                            while k > base && stack[k - 1].1 < tl {
                                 stack[k] = stack[k - 1];
                                 k -= 1;
                             }
-                            stack[k] = (n.child[lane], t[lane]);
+                            stack[k] = (child, tl);
                             top += 1;
                         }
                     }
