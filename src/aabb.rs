@@ -112,12 +112,6 @@ impl<F: Float> RayBoxTest<F> {
         }
     }
 
-    /// Whether the direction's component on `axis` is negative.
-    #[inline]
-    pub fn negative(&self, axis: usize) -> bool {
-        self.neg[axis] == 1
-    }
-
     /// Whether the ray meets `b` for some `t` in `(0, t_max)`.
     #[inline]
     pub fn hit(&self, corners: &[Vec3<F>; 2], t_max: F) -> bool {

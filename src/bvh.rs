@@ -4,7 +4,7 @@
 
 mod wide;
 
-use crate::aabb::{Aabb, RayBoxTest};
+use crate::aabb::Aabb;
 use crate::float::{Float, lit};
 use crate::ray::Ray;
 use crate::vec3::Vec3;
@@ -37,8 +37,6 @@ struct Node<F> {
 pub struct Bvh<F> {
     nodes: Vec<Node<F>>,
     indices: Vec<u32>,
-    /// Levels below the root of the binary tree.
-    depth: usize,
     /// The same tree collapsed to four children per node, which the traversal runs on.
     wide: Vec<Wide<F>>,
     /// The wide tree's root (`None` for an empty hierarchy).
@@ -73,7 +71,6 @@ impl<F: Float> Bvh<F> {
         let mut bvh = Self {
             nodes: Vec::with_capacity(2 * bounds.len()),
             indices: Vec::with_capacity(bounds.len()),
-            depth: 0,
             wide: Vec::new(),
             root: None,
             wide_depth: 0,
@@ -106,7 +103,6 @@ impl<F: Float> Bvh<F> {
 
     /// Fills the (already allocated) node `me` with the subtree over `items`.
     fn build_node(&mut self, me: usize, items: &mut [Item<F>], depth: usize) {
-        self.depth = self.depth.max(depth);
         let bounds = items.iter().fold(Aabb::empty(), |b, it| b.union(it.bounds));
         self.nodes[me].bounds = bounds.corners();
         let split = if depth < MEDIAN_DEPTH {
@@ -202,9 +198,10 @@ impl<F: Float> Bvh<F> {
     /// first. `visit(i, t_max)` tests primitive `i` and returns the new, smaller `t_max`
     /// if it found a nearer hit; boxes beyond the current `t_max` are skipped.
     ///
-    /// At an interior node both children's boxes are tested; the ray descends into the
-    /// one it enters first and stacks the other with its entry distance, so a stacked
-    /// subtree that a later hit has moved out of reach is dropped without another test.
+    /// It runs on the 4-wide collapse of the tree: at each node the ray is tested against
+    /// the four children's boxes at once, the ones it enters are stacked nearest on top with
+    /// their entry distances, and a stacked subtree that a later hit has moved out of reach
+    /// is dropped without another test.
     #[inline]
     pub fn traverse(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
         // Each wide level stacks at most four children, one of which is popped at once.
@@ -214,82 +211,6 @@ impl<F: Float> Bvh<F> {
             self.traverse_wide(&mut [(Child::Empty, F::zero()); INLINE], ray, t_max, visit);
         } else {
             self.traverse_wide(&mut vec![(Child::Empty, F::zero()); need], ray, t_max, visit);
-        }
-    }
-
-    /// The binary traversal (kept to compare against the wide one in tests and benches).
-    #[inline]
-    pub fn traverse_binary(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
-        const INLINE: usize = 32;
-        if self.depth <= INLINE {
-            self.traverse_with(&mut [(0, F::zero()); INLINE], ray, t_max, visit);
-        } else {
-            self.traverse_with(&mut vec![(0, F::zero()); self.depth], ray, t_max, visit);
-        }
-    }
-
-    /// [`Bvh::traverse`] with a stack of at least `self.depth` entries.
-    #[inline]
-    fn traverse_with(
-        &self,
-        stack: &mut [(u32, F)],
-        ray: &Ray<F>,
-        mut t_max: F,
-        mut visit: impl FnMut(usize, F) -> Option<F>,
-    ) {
-        let test = RayBoxTest::new(ray);
-        let Some(root) = self.nodes.first() else {
-            return;
-        };
-        if test.entry(&root.bounds, t_max).is_none() {
-            return;
-        }
-        let mut top = 0;
-        let mut n = root;
-        loop {
-            if n.count > 0 {
-                let start = n.offset as usize;
-                for &i in &self.indices[start..start + n.count as usize] {
-                    if let Some(t) = visit(i as usize, t_max) {
-                        t_max = t;
-                    }
-                }
-            } else {
-                let left = n.offset as usize;
-                let [l, r] = &self.nodes[left..left + 2] else {
-                    unreachable!("interior nodes have two children")
-                };
-                match (test.entry(&l.bounds, t_max), test.entry(&r.bounds, t_max)) {
-                    (Some(a), Some(b)) => {
-                        let (near, far, t_far) = if b < a { (r, left, a) } else { (l, left + 1, b) };
-                        stack[top] = (far as u32, t_far);
-                        top += 1;
-                        n = near;
-                        continue;
-                    }
-                    (Some(_), None) => {
-                        n = l;
-                        continue;
-                    }
-                    (None, Some(_)) => {
-                        n = r;
-                        continue;
-                    }
-                    (None, None) => {}
-                }
-            }
-            // Pop the next stacked subtree still within reach.
-            loop {
-                if top == 0 {
-                    return;
-                }
-                top -= 1;
-                let (next, t_entry) = stack[top];
-                if t_entry <= t_max {
-                    n = &self.nodes[next as usize];
-                    break;
-                }
-            }
         }
     }
 
@@ -390,16 +311,9 @@ mod tests {
                 got.push(i);
                 None
             });
-            let mut binary = Vec::new();
-            bvh.traverse_binary(&ray, f64::INFINITY, |i, _| {
-                binary.push(i);
-                None
-            });
             got.sort();
             want.sort();
-            binary.sort();
             assert_eq!(got, want);
-            assert_eq!(binary, want);
             assert_eq!(bvh.any(&ray, f64::INFINITY, |_| true), !want.is_empty());
         }
     }

@@ -170,6 +170,21 @@ impl Float for crate::double_double::DoubleDouble {
     }
 }
 
+/// Test helper: each named generic test function `fn name<F: Float>()` becomes a
+/// `#[test]` running it for `f32` and for `f64`.
+#[cfg(test)]
+macro_rules! for_each_scalar {
+    ($($name:ident),* $(,)?) => {$(
+        #[test]
+        fn $name() {
+            super::$name::<f32>();
+            super::$name::<f64>();
+        }
+    )*};
+}
+#[cfg(test)]
+pub(crate) use for_each_scalar;
+
 #[cfg(test)]
 mod tests {
     use super::*;

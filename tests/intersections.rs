@@ -40,6 +40,9 @@ use raytrace::{Float, Hit, Hittable, Plane, Ray, Sphere, Triangle, Vec3, lit};
 use std::f64::consts::TAU;
 use twofloat::TwoFloat;
 
+/// The fixed seed of the power checks (`common::harness_rejects`).
+const HARNESS_SEED: u64 = 0x1DE5;
+
 const REGRESSIONS: &str = "proptest-regressions/intersections.txt";
 
 /// Cases per property and scalar: all checks are a few hundred flops, so 20 000 cases of the
@@ -67,23 +70,6 @@ fn zero() -> TwoFloat {
 /// `F::gamma(n)` as an `f64`.
 fn gamma<F: Float>(n: u32) -> f64 {
     F::gamma(n).to_f64()
-}
-
-/// A property run with a deliberately wrong method must fail: the same harness, the same
-/// strategy, a fixed seed, no shrinking and no regression file.
-fn harness_rejects<S: Strategy>(
-    strategy: S,
-    cases: u32,
-    test: impl Fn(S::Value) -> Result<(), TestCaseError>,
-) -> bool {
-    let mut runner = TestRunner::new(ProptestConfig {
-        cases,
-        rng_seed: RngSeed::Fixed(0x1D_E5),
-        failure_persistence: None,
-        max_shrink_iters: 0,
-        ..ProptestConfig::default()
-    });
-    runner.run(&strategy, test).is_err()
 }
 
 // ---------------------------------------------------------------------------------------
@@ -786,33 +772,29 @@ macro_rules! intersection_tests {
             #[test]
             fn the_checks_reject_wrong_methods() {
                 assert!(
-                    harness_rejects(sphere_case::<$F>(), CASES, |c| check_sphere_surface(
-                        &c,
-                        |s, r, t_max| { textbook_sphere_hit(s, r, 0.0, t_max) }
-                    )),
+                    harness_rejects(sphere_case::<$F>(), CASES, HARNESS_SEED, |c| {
+                        check_sphere_surface(&c, |s, r, t_max| textbook_sphere_hit(s, r, 0.0, t_max))
+                    }),
                     "the textbook sphere passed the surface check"
                 );
                 assert!(
-                    harness_rejects(tri_case::<$F>(), CASES, |c| check_triangle_decision(
-                        &c,
-                        moller_trumbore_lenient
-                    )),
+                    harness_rejects(tri_case::<$F>(), CASES, HARNESS_SEED, |c| {
+                        check_triangle_decision(&c, moller_trumbore_lenient)
+                    }),
                     "a lenient Möller–Trumbore passed the decision check"
                 );
                 assert!(
-                    harness_rejects(tri_case::<$F>(), CASES, |c| check_triangle_decision(
-                        &c,
-                        moller_trumbore_strict
-                    )),
+                    harness_rejects(tri_case::<$F>(), CASES, HARNESS_SEED, |c| {
+                        check_triangle_decision(&c, moller_trumbore_strict)
+                    }),
                     "a strict Möller–Trumbore passed the decision check"
                 );
                 // The plain Möller–Trumbore is inexact only at the edges, inside the margins:
                 // the decision check accepts it, so it tests decisions, not watertightness.
                 assert!(
-                    !harness_rejects(tri_case::<$F>(), CASES, |c| check_triangle_decision(
-                        &c,
-                        |t, r| { moller_trumbore(t, r, 0.0) }
-                    )),
+                    !harness_rejects(tri_case::<$F>(), CASES, HARNESS_SEED, |c| {
+                        check_triangle_decision(&c, |t, r| moller_trumbore(t, r, 0.0))
+                    }),
                     "the plain Möller–Trumbore failed the decision check"
                 );
             }

@@ -74,8 +74,9 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
     fn direct_light(&mut self, hit: &Hit<F>, albedo: Color<F>) -> Color<F> {
         let brdf = albedo * (F::one() / lit::<F>(std::f64::consts::PI));
         let mut sum = Color::zero();
+        // Shadow rays leave on the normal's side: one offset origin serves every light.
+        let origin = crate::shape::offset_ray_origin(hit.point, hit.error, hit.normal, hit.normal);
         for light in self.scene.lights() {
-            let origin = crate::shape::offset_ray_origin(hit.point, hit.error, hit.normal, hit.normal);
             let to_light = light.position() - origin;
             let dist2 = to_light.length_squared();
             let Some(dir) = to_light.try_normalize() else {

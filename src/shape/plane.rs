@@ -198,17 +198,9 @@ mod tests {
         assert!(msg.contains("plane normal"), "{msg}");
     }
 
-    macro_rules! for_each_scalar {
-        ($($name:ident),*) => {$(
-            #[test]
-            fn $name() {
-                super::$name::<f32>();
-                super::$name::<f64>();
-            }
-        )*};
-    }
-
     mod scalars {
+        use crate::float::for_each_scalar;
+
         for_each_scalar!(
             hits_from_the_front,
             hits_from_the_back,

@@ -374,17 +374,9 @@ mod tests {
         assert_eq!(thin.normal(), v(0.0, 0.0, 1.0), "{}", F::NAME);
     }
 
-    macro_rules! for_each_scalar {
-        ($($name:ident),*) => {$(
-            #[test]
-            fn $name() {
-                super::$name::<f32>();
-                super::$name::<f64>();
-            }
-        )*};
-    }
-
     mod scalars {
+        use crate::float::for_each_scalar;
+
         for_each_scalar!(
             hits_inside,
             misses_outside_behind_and_parallel,

@@ -9,7 +9,7 @@
 #![allow(dead_code)]
 
 use proptest::prelude::*;
-use proptest::test_runner::{FileFailurePersistence, RngSeed};
+use proptest::test_runner::{FileFailurePersistence, RngSeed, TestRunner};
 use rand::TryRng;
 use raytrace::{Float, Vec3};
 use std::convert::Infallible;
@@ -26,6 +26,24 @@ pub fn config(cases: u32, seed: u64, file: &'static str) -> ProptestConfig {
         failure_persistence: Some(Box::new(FileFailurePersistence::Direct(file))),
         ..ProptestConfig::default()
     }
+}
+
+/// Whether a property run fails: the power checks run a test against a deliberately
+/// wrong method and require this. Fixed `seed`, no shrinking, no regression file.
+pub fn harness_rejects<S: Strategy>(
+    strategy: S,
+    cases: u32,
+    seed: u64,
+    test: impl Fn(S::Value) -> Result<(), TestCaseError>,
+) -> bool {
+    let mut runner = TestRunner::new(ProptestConfig {
+        cases,
+        rng_seed: RngSeed::Fixed(seed),
+        failure_persistence: None,
+        max_shrink_iters: 0,
+        ..ProptestConfig::default()
+    });
+    runner.run(&strategy, test).is_err()
 }
 
 /// The scalar's machine epsilon (`2⁻²³` for f32, `2⁻⁵²` for f64) as an `f64`.
