@@ -1,6 +1,7 @@
 //! A bounding volume hierarchy: binned surface-area-heuristic build, flat array layout,
-//! ordered stack traversal. It only indexes primitives by their boxes; the scene owns
-//! the primitives and tests them in the callbacks.
+//! ordered stack traversal. It only indexes primitives by their boxes and groups them into
+//! leaves; the scene owns the primitives, lays out each leaf's as it likes, and tests a
+//! whole leaf in the traversal's callback.
 
 mod wide;
 
@@ -10,20 +11,22 @@ use crate::ray::Ray;
 use crate::vec3::Vec3;
 use wide::{Child, Wide};
 
-/// Most primitives a leaf may hold.
-const MAX_LEAF: usize = 4;
+/// Most primitives a leaf may hold: one packet of spheres ([`crate::shape::Sphere4`]).
+const MAX_LEAF: usize = crate::lanes::LANES;
 /// Centroid bins per axis for the SAH sweep.
 const BINS: usize = 16;
 /// Depth from which nodes split at the median instead of by SAH, so the tree's depth,
 /// and the traversal stack, stay below `MEDIAN_DEPTH + 32` whatever the input.
 const MEDIAN_DEPTH: usize = 40;
-/// Cost of visiting a node, relative to one primitive test (pbrt uses ⅛–1; this was
-/// measured on the random-spheres scene, where it hardly matters between ⅛ and ½).
-const TRAVERSAL_COST: f64 = 0.25;
+/// Cost of visiting a node, relative to testing one leaf. A leaf of up to four spheres
+/// is one packet test, so the SAH costs a leaf `⌈N/4⌉` and a subtree of `N` primitives
+/// `N/4` (MacDonald & Booth's linear estimate, in packets). Measured on the
+/// random-spheres scene (`render` bench, `bvh-cost`): ½ was fastest, ¼ and 1 within 3 %.
+const TRAVERSAL_COST: f64 = 0.5;
 
-/// One node of the flattened tree (32 bytes in f32). An interior node's children are the
-/// adjacent pair `nodes[offset]`, `nodes[offset + 1]` (one bounds check fetches both);
-/// a leaf holds `indices[offset..offset + count]`.
+/// One node of the flattened binary tree the build makes (32 bytes in f32). An interior
+/// node's children are the adjacent pair `nodes[offset]`, `nodes[offset + 1]`; a leaf
+/// (`count > 0`) is leaf number `offset`.
 #[derive(Clone, Copy, Debug)]
 struct Node<F> {
     /// `[min, max]` of the node's box.
@@ -37,6 +40,8 @@ struct Node<F> {
 pub struct Bvh<F> {
     nodes: Vec<Node<F>>,
     indices: Vec<u32>,
+    /// Leaf `k` holds `indices[leaves[k].0..leaves[k].1]`.
+    leaves: Vec<(u32, u32)>,
     /// The same tree collapsed to four children per node, which the traversal runs on.
     wide: Vec<Wide<F>>,
     /// The wide tree's root (`None` for an empty hierarchy).
@@ -71,6 +76,7 @@ impl<F: Float> Bvh<F> {
         let mut bvh = Self {
             nodes: Vec::with_capacity(2 * bounds.len()),
             indices: Vec::with_capacity(bounds.len()),
+            leaves: Vec::new(),
             wide: Vec::new(),
             root: None,
             wide_depth: 0,
@@ -84,10 +90,7 @@ impl<F: Float> Bvh<F> {
             bvh.build_node(0, &mut items, 0);
             let root = bvh.nodes[0];
             bvh.root = Some(if root.count > 0 {
-                Child::Leaf {
-                    first: root.offset,
-                    count: root.count,
-                }
+                Child::Leaf(root.offset)
             } else {
                 Child::Node(wide::collapse(&bvh.nodes, 0, &mut bvh.wide))
             });
@@ -96,9 +99,23 @@ impl<F: Float> Bvh<F> {
         bvh
     }
 
-    /// Number of nodes (for tests and reports).
+    /// Number of nodes of the binary tree (for tests and reports).
     pub fn node_count(&self) -> usize {
         self.nodes.len()
+    }
+
+    /// Number of leaves; the traversal's callbacks receive leaf numbers `0..leaf_count()`.
+    pub fn leaf_count(&self) -> usize {
+        self.leaves.len()
+    }
+
+    /// The primitives of leaf `k` (at most four).
+    ///
+    /// # Panics
+    /// If `k >= leaf_count()`.
+    pub fn leaf(&self, k: usize) -> &[u32] {
+        let (start, end) = self.leaves[k];
+        &self.indices[start as usize..end as usize]
     }
 
     /// Fills the (already allocated) node `me` with the subtree over `items`.
@@ -125,9 +142,11 @@ impl<F: Float> Bvh<F> {
                 self.build_node(left + 1, r, depth + 1);
             }
             None => {
-                self.nodes[me].offset = self.indices.len() as u32;
-                self.nodes[me].count = items.len() as u16;
+                let start = self.indices.len() as u32;
                 self.indices.extend(items.iter().map(|it| it.index));
+                self.nodes[me].offset = self.leaves.len() as u32;
+                self.nodes[me].count = items.len() as u16;
+                self.leaves.push((start, self.indices.len() as u32));
             }
         }
     }
@@ -135,7 +154,8 @@ impl<F: Float> Bvh<F> {
     /// The SAH split `(axis, mid)` partitioning `items` in place, or `None` for a leaf.
     ///
     /// Centroids are binned along each of the three axes; the cheapest bin boundary wins.
-    /// Cost of a split: `C_t + (A_L·N_L + A_R·N_R)/A`, of a leaf: `N` (MacDonald & Booth).
+    /// Cost of a split: `C_t + (A_L·N_L + A_R·N_R)/(4A)`, of a leaf: `⌈N/4⌉` (see
+    /// [`TRAVERSAL_COST`]).
     fn split(&self, items: &mut [Item<F>], bounds: &Aabb<F>) -> Option<(usize, usize)> {
         let n = items.len();
         if n <= 1 {
@@ -175,8 +195,9 @@ impl<F: Float> Bvh<F> {
                 if cnt == 0 || rc == 0 {
                     continue;
                 }
+                let packets = |n: usize| n.div_ceil(MAX_LEAF) as f64;
                 let cost =
-                    TRAVERSAL_COST + (acc.surface_area().to_f64() * cnt as f64 + ra * rc as f64) / area;
+                    TRAVERSAL_COST + (acc.surface_area().to_f64() * packets(cnt) + ra * packets(rc)) / area;
                 if best.is_none_or(|(c, _, _)| cost < c) {
                     best = Some((cost, axis, i));
                 }
@@ -185,7 +206,7 @@ impl<F: Float> Bvh<F> {
         match best {
             // Every centroid coincides: no plane separates them.
             None => (n > MAX_LEAF).then_some((0, n / 2)),
-            Some((cost, _, _)) if n <= MAX_LEAF && cost >= n as f64 => None,
+            Some((cost, _, _)) if n <= MAX_LEAF && cost >= 1.0 => None,
             Some((_, axis, last)) => {
                 let bin_of = binner(cb.min[axis], cb.max[axis]);
                 let mid = partition(items, |it| bin_of(it.centroid[axis]) <= last);
@@ -194,9 +215,11 @@ impl<F: Float> Bvh<F> {
         }
     }
 
-    /// Visits the primitives whose boxes the ray meets in `(0, t_max)`, nearer subtrees
-    /// first. `visit(i, t_max)` tests primitive `i` and returns the new, smaller `t_max`
-    /// if it found a nearer hit; boxes beyond the current `t_max` are skipped.
+    /// Visits the leaves whose boxes the ray meets in `(0, t_max]`, nearer subtrees first.
+    /// `visit(k, t_max)` tests the primitives of leaf `k` and returns the new, smaller
+    /// `t_max` if it found a nearer hit; boxes entered beyond the current `t_max` are
+    /// skipped (a box entered exactly at `t_max` is still visited, so a caller can break
+    /// ties at equal distance).
     ///
     /// It runs on the 4-wide collapse of the tree: at each node the ray is tested against
     /// the four children's boxes at once, the ones it enters are stacked nearest on top with
@@ -214,8 +237,8 @@ impl<F: Float> Bvh<F> {
         }
     }
 
-    /// Whether `test(i)` is true for some primitive whose box the ray meets in
-    /// `(0, t_max)`; stops at the first.
+    /// Whether `test(k)` is true for some leaf whose box the ray meets in `(0, t_max)`;
+    /// stops at the first.
     #[inline]
     pub fn any(&self, ray: &Ray<F>, t_max: F, mut test: impl FnMut(usize) -> bool) -> bool {
         let mut found = false;
@@ -307,14 +330,24 @@ mod tests {
                 .filter(|&i| boxes[i].hit(&ray, f64::INFINITY))
                 .collect();
             let mut got = Vec::new();
-            bvh.traverse(&ray, f64::INFINITY, |i, _| {
-                got.push(i);
+            bvh.traverse(&ray, f64::INFINITY, |k, _| {
+                got.extend(
+                    bvh.leaf(k)
+                        .iter()
+                        .filter(|&&i| boxes[i as usize].hit(&ray, f64::INFINITY))
+                        .map(|&i| i as usize),
+                );
                 None
             });
             got.sort();
             want.sort();
             assert_eq!(got, want);
-            assert_eq!(bvh.any(&ray, f64::INFINITY, |_| true), !want.is_empty());
+            let any_box = |k: usize| {
+                bvh.leaf(k)
+                    .iter()
+                    .any(|&i| boxes[i as usize].hit(&ray, f64::INFINITY))
+            };
+            assert_eq!(bvh.any(&ray, f64::INFINITY, any_box), !want.is_empty());
         }
     }
 
@@ -341,8 +374,13 @@ mod tests {
                         .filter(|&i| boxes[i].hit(&ray, f32::INFINITY))
                         .collect();
                     let mut got = Vec::new();
-                    bvh.traverse(&ray, f32::INFINITY, |i, _| {
-                        got.push(i);
+                    bvh.traverse(&ray, f32::INFINITY, |k, _| {
+                        got.extend(
+                            bvh.leaf(k)
+                                .iter()
+                                .filter(|&&i| boxes[i as usize].hit(&ray, f32::INFINITY))
+                                .map(|&i| i as usize),
+                        );
                         None
                     });
                     got.sort();
@@ -359,6 +397,7 @@ mod tests {
         let ray = Ray::new(Vec3::zero(), Vec3::new(0.0, 0.0, -1.0));
         assert!(!none.any(&ray, f32::INFINITY, |_| true));
         let one = Bvh::build(&[Aabb::new(Vec3::new(-1.0, -1.0, -3.0), Vec3::new(1.0, 1.0, -2.0))]);
-        assert!(one.any(&ray, f32::INFINITY, |i| i == 0));
+        assert_eq!((one.leaf_count(), one.leaf(0)), (1, &[0u32][..]));
+        assert!(one.any(&ray, f32::INFINITY, |k| k == 0));
     }
 }

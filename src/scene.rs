@@ -1,12 +1,14 @@
 //! A scene: objects (a shape with its material), point lights and a background.
 
+mod index;
+
 use crate::background::Background;
-use crate::bvh::Bvh;
 use crate::float::Float;
 use crate::light::PointLight;
 use crate::material::{Material, MaterialKind};
 use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, ShapeKind};
+use index::Index;
 use std::marker::PhantomData;
 use std::sync::{Arc, OnceLock};
 
@@ -25,16 +27,18 @@ pub struct Object<S, M> {
 /// "vector of smart pointers").
 ///
 /// Intersection is a plain loop over the objects until there are enough of them for a
-/// bounding volume hierarchy to pay ([`Acceleration::Auto`]); the hierarchy is built on
-/// the first query after a change and holds only the shapes with
-/// [`bounds`](Hittable::bounds) (planes and unbounded shapes stay in the loop).
+/// bounding volume hierarchy to pay ([`Acceleration::Auto`]); the hierarchy holds only
+/// the shapes with [`bounds`](Hittable::bounds) (planes and unbounded shapes stay in the
+/// loop). Either way, the shapes that are spheres ([`Hittable::as_sphere`]: the enum fast
+/// path's spheres, not trait objects) are tested four at a time and only the nearest hit's
+/// record is made. The structure is built on the first query after a change.
 #[derive(Clone, Debug)]
 pub struct Scene<F, S, M> {
     objects: Vec<Object<S, M>>,
     lights: Vec<PointLight<F>>,
     background: Background<F>,
     acceleration: Acceleration,
-    index: OnceLock<Option<Index<F>>>,
+    index: OnceLock<Index<F>>,
     _scalar: PhantomData<F>,
 }
 
@@ -44,7 +48,7 @@ pub enum Acceleration {
     /// A BVH once the scene has at least [`Acceleration::AUTO_THRESHOLD`] bounded objects.
     #[default]
     Auto,
-    /// Always the plain loop.
+    /// Always the plain loop (spheres still four at a time).
     Linear,
     /// Always a BVH over the bounded objects.
     Bvh,
@@ -60,16 +64,6 @@ impl Acceleration {
     /// through the BVH. From 8 objects the BVH is used; the spec's scenes keep the loop
     /// and pay nothing for a hierarchy.
     pub const AUTO_THRESHOLD: usize = 8;
-}
-
-/// The BVH over the bounded objects and the list of the others.
-#[derive(Clone, Debug)]
-struct Index<F> {
-    bvh: Bvh<F>,
-    /// Object index of each BVH primitive.
-    bounded: Vec<u32>,
-    /// Objects without bounds, tested one by one.
-    unbounded: Vec<u32>,
 }
 
 /// The fast path: shapes and materials are enums, stored inline.
@@ -138,81 +132,26 @@ impl<F: Float, S, M> Scene<F, S, M> {
 impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
     /// Whether intersection goes through a BVH (building it if it is due).
     pub fn uses_bvh(&self) -> bool {
-        self.index().is_some()
+        self.index().uses_bvh()
     }
 
-    fn index(&self) -> Option<&Index<F>> {
+    #[inline]
+    fn index(&self) -> &Index<F> {
         self.index
-            .get_or_init(|| {
-                let (mut bounded, mut boxes, mut unbounded) = (Vec::new(), Vec::new(), Vec::new());
-                for (i, o) in self.objects.iter().enumerate() {
-                    match o.shape.bounds() {
-                        Some(b) => {
-                            bounded.push(i as u32);
-                            boxes.push(b);
-                        }
-                        None => unbounded.push(i as u32),
-                    }
-                }
-                let wanted = match self.acceleration {
-                    Acceleration::Auto => bounded.len() >= Acceleration::AUTO_THRESHOLD,
-                    Acceleration::Linear => false,
-                    Acceleration::Bvh => true,
-                };
-                wanted.then(|| Index {
-                    bvh: Bvh::build(&boxes),
-                    bounded,
-                    unbounded,
-                })
-            })
-            .as_ref()
+            .get_or_init(|| Index::build(&self.objects, self.acceleration))
     }
 
-    /// The nearest hit in `(0, t_max)` and the material hit.
+    /// The nearest hit in `(0, t_max)` and the material hit. At equal distance the object
+    /// added first wins, so the answer never depends on the acceleration structure.
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &M)> {
-        let mut nearest = t_max;
-        let mut found: Option<(Hit<F>, usize)> = None;
-        let mut test = |i: usize, t_max: F| {
-            let hit = self.objects[i].shape.hit(ray, t_max)?;
-            found = Some((hit, i));
-            Some(hit.t)
-        };
-        match self.index() {
-            None => {
-                // The plain loop, written over the objects themselves (no index, no
-                // bounds check): the spec's scenes spend most of their time here.
-                let mut best: Option<(Hit<F>, &M)> = None;
-                for o in &self.objects {
-                    if let Some(hit) = o.shape.hit(ray, nearest) {
-                        nearest = hit.t;
-                        best = Some((hit, &o.material));
-                    }
-                }
-                return best;
-            }
-            Some(ix) => {
-                for &i in &ix.unbounded {
-                    if let Some(t) = test(i as usize, nearest) {
-                        nearest = t;
-                    }
-                }
-                ix.bvh
-                    .traverse(ray, nearest, |k, t_max| test(ix.bounded[k] as usize, t_max));
-            }
-        }
-        found.map(|(hit, i)| (hit, &self.objects[i].material))
+        let (hit, object) = self.index().hit(&self.objects, ray, t_max)?;
+        Some((hit, &object.material))
     }
 
     /// Whether any object blocks the ray in `(0, t_max)`; stops at the first.
     #[inline]
     pub fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        let blocks = |i: u32| self.objects[i as usize].shape.occluded(ray, t_max);
-        match self.index() {
-            None => self.objects.iter().any(|o| o.shape.occluded(ray, t_max)),
-            Some(ix) => {
-                ix.unbounded.iter().any(|&i| blocks(i)) || ix.bvh.any(ray, t_max, |k| blocks(ix.bounded[k]))
-            }
-        }
+        self.index().occluded(&self.objects, ray, t_max)
     }
 }

@@ -3,10 +3,12 @@
 
 mod plane;
 mod sphere;
+mod sphere4;
 mod triangle;
 
 pub use plane::Plane;
 pub use sphere::{Sphere, TEXTBOOK_T_MIN, TextbookSphere, textbook_sphere_hit};
+pub use sphere4::{LANES, Sphere4};
 pub use triangle::Triangle;
 
 use crate::aabb::Aabb;
@@ -71,17 +73,12 @@ impl<F: Float> Hit<F> {
 pub fn offset_ray_origin<F: Float>(p: Vec3<F>, err: Vec3<F>, n: Vec3<F>, w: Vec3<F>) -> Vec3<F> {
     let d = n.abs().dot(err);
     let offset = if w.dot(n) < F::zero() { -(n * d) } else { n * d };
-    let away = |po: F, o: F| {
-        if o > F::zero() {
-            po.next_up()
-        } else if o < F::zero() {
-            po.next_down()
-        } else {
-            po
-        }
-    };
     let po = p + offset;
-    Vec3::new(away(po.x, offset.x), away(po.y, offset.y), away(po.z, offset.z))
+    Vec3::new(
+        po.x.step_toward(offset.x),
+        po.y.step_toward(offset.y),
+        po.z.step_toward(offset.z),
+    )
 }
 
 /// A surface a ray can hit: the specification's abstract object.
@@ -106,6 +103,22 @@ pub trait Hittable<F: Float> {
     /// implementor does not say; only bounded shapes go into a scene's [`Bvh`](crate::bvh::Bvh).
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
+        None
+    }
+
+    /// The sphere this shape is, if it is exactly a [`Sphere`]: a scene packs those four
+    /// to a [`Sphere4`] and tests them at once, and builds the full [`Hit`] only for the
+    /// nearest.
+    ///
+    /// Only a concrete type can answer (`where Self: Sized` keeps the method out of the
+    /// vtable): a trait object hides what it is, so a scene of `Box<dyn Hittable>` tests
+    /// each shape through its own [`hit`](Hittable::hit). This layout is what the enum
+    /// fast path buys beyond the `match` itself.
+    #[inline]
+    fn as_sphere(&self) -> Option<&Sphere<F>>
+    where
+        Self: Sized,
+    {
         None
     }
 }
@@ -169,6 +182,13 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
             Self::Plane(p) => p.bounds(),
             Self::Triangle(t) => t.bounds(),
             Self::TextbookSphere(s) => s.bounds(),
+        }
+    }
+    #[inline]
+    fn as_sphere(&self) -> Option<&Sphere<F>> {
+        match self {
+            Self::Sphere(s) => Some(s),
+            _ => None,
         }
     }
 }

@@ -4,8 +4,8 @@
 
 use super::{Bvh, Node};
 use crate::float::Float;
+use crate::lanes::F4;
 use crate::ray::Ray;
-use crate::vec3::Vec3;
 
 /// What a lane of a wide node points to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -14,15 +14,15 @@ pub(super) enum Child {
     Empty,
     /// Another wide node.
     Node(u32),
-    /// Primitives `indices[first..first + count]`.
-    Leaf { first: u32, count: u16 },
+    /// Leaf number `k` of the hierarchy.
+    Leaf(u32),
 }
 
-/// Four children's boxes: `min[axis][lane]`, `max[axis][lane]`.
+/// Four children's boxes, one [`F4`] per axis and side: `lo[axis].0[lane]`, `hi[axis].0[lane]`.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Wide<F> {
-    min: [[F; 4]; 3],
-    max: [[F; 4]; 3],
+    lo: [F4<F>; 3],
+    hi: [F4<F>; 3],
     child: [Child; 4],
 }
 
@@ -52,8 +52,8 @@ pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wid
     }
     let me = out.len();
     let empty = Wide {
-        min: [[F::infinity(); 4]; 3],
-        max: [[F::neg_infinity(); 4]; 3],
+        lo: [F4::splat(F::infinity()); 3],
+        hi: [F4::splat(F::neg_infinity()); 3],
         child: [Child::Empty; 4],
     };
     out.push(empty);
@@ -61,14 +61,11 @@ pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wid
     for (lane, &i) in lanes.iter().enumerate() {
         let [lo, hi] = nodes[i].bounds;
         for axis in 0..3 {
-            node.min[axis][lane] = lo[axis];
-            node.max[axis][lane] = hi[axis];
+            node.lo[axis].0[lane] = lo[axis];
+            node.hi[axis].0[lane] = hi[axis];
         }
         node.child[lane] = if nodes[i].count > 0 {
-            Child::Leaf {
-                first: nodes[i].offset,
-                count: nodes[i].count,
-            }
+            Child::Leaf(nodes[i].offset)
         } else {
             Child::Node(collapse(nodes, i, out))
         };
@@ -92,52 +89,48 @@ pub(super) fn depth<F>(wide: &[Wide<F>], root: Option<Child>) -> usize {
     }
 }
 
-/// A ray prepared for the 4-wide slab test.
+/// A ray prepared for the 4-wide slab test: origin and reciprocal direction in every
+/// lane, and the direction's signs, which pick each axis's near side once per ray.
 struct WideRay<F> {
-    origin: [F; 3],
-    inv_d: [F; 3],
+    origin: [F4<F>; 3],
+    inv_d: [F4<F>; 3],
     neg: [bool; 3],
-    grow: F,
+    grow: F4<F>,
 }
 
 impl<F: Float> WideRay<F> {
     fn new(ray: &Ray<F>) -> Self {
-        let inv: Vec3<F> = ray.direction.map(|d| F::one() / d);
+        let (o, d) = (ray.origin, ray.direction);
+        let inv = [d.x, d.y, d.z].map(|d| F::one() / d);
         Self {
-            origin: [ray.origin.x, ray.origin.y, ray.origin.z],
-            inv_d: [inv.x, inv.y, inv.z],
-            neg: [inv.x < F::zero(), inv.y < F::zero(), inv.z < F::zero()],
-            grow: F::one() + F::gamma(3) * crate::float::lit(2.0),
+            origin: [o.x, o.y, o.z].map(F4::splat),
+            inv_d: inv.map(F4::splat),
+            neg: inv.map(|i| i < F::zero()),
+            grow: F4::splat(F::one() + F::gamma(3) * crate::float::lit(2.0)),
         }
     }
 
     /// The entry distance into each of the node's four boxes, or +∞ where the ray misses
-    /// it in `(0, t_max)`. Same slab test as [`crate::aabb::RayBoxTest::entry`], one
-    /// axis at a time over the four lanes; `max`/`min` ignore the NaN of a ray lying in
-    /// a slab's plane.
+    /// it in `(0, t_max]`. Same slab test as [`crate::aabb::RayBoxTest::entry`], one axis
+    /// at a time over the four lanes; a ray lying in a slab's plane gives `0·∞ = NaN`
+    /// there, which fails the comparisons and so constrains nothing.
     #[inline(always)]
-    fn entries(&self, n: &Wide<F>, t_max: F) -> [F; 4] {
-        let mut t0 = [F::zero(); 4];
-        let mut t1 = [t_max; 4];
+    fn entries(&self, n: &Wide<F>, t_max: F) -> F4<F> {
+        let mut t0 = F4::splat(F::zero());
+        let mut t1 = F4::splat(t_max);
         for axis in 0..3 {
             let (near, far) = if self.neg[axis] {
-                (&n.max[axis], &n.min[axis])
+                (n.hi[axis], n.lo[axis])
             } else {
-                (&n.min[axis], &n.max[axis])
+                (n.lo[axis], n.hi[axis])
             };
             let (o, inv) = (self.origin[axis], self.inv_d[axis]);
-            for lane in 0..4 {
-                t0[lane] = t0[lane].max((near[lane] - o) * inv);
-                t1[lane] = t1[lane].min((far[lane] - o) * inv * self.grow);
-            }
+            let t_near = (near - o) * inv;
+            let t_far = (far - o) * inv * self.grow;
+            t0 = F4::select_lt(t0, t_near, t_near, t0);
+            t1 = F4::select_lt(t_far, t1, t_far, t1);
         }
-        let mut out = [F::infinity(); 4];
-        for lane in 0..4 {
-            if t0[lane] <= t1[lane] {
-                out[lane] = t0[lane];
-            }
-        }
-        out
+        F4::select_lt(t1, t0, F4::splat(F::infinity()), t0)
     }
 }
 
@@ -163,28 +156,32 @@ impl<F: Float> Bvh<F> {
                 Child::Node(i) => {
                     let n = &self.wide[i as usize];
                     let t = r.entries(n, t_max);
-                    // Push the hit lanes so that the stack stays sorted farthest-first among
-                    // them (an insertion sort on the stack's top: usually one or two lanes),
-                    // and the nearest comes off next.
+                    let mut entered = t.mask_lt(F::infinity());
+                    if entered.count_ones() == 1 {
+                        // One child entered (the common case): go straight down.
+                        current = n.child[entered.trailing_zeros() as usize];
+                        continue;
+                    }
+                    // Push the entered lanes so that the stack stays sorted farthest-first
+                    // among them (an insertion sort on the stack's top) and the nearest
+                    // comes off next.
                     let base = top;
-                    for (&child, &tl) in n.child.iter().zip(&t) {
-                        if tl < F::infinity() {
-                            let mut k = top;
-                            while k > base && stack[k - 1].1 < tl {
-                                stack[k] = stack[k - 1];
-                                k -= 1;
-                            }
-                            stack[k] = (child, tl);
-                            top += 1;
+                    while entered != 0 {
+                        let lane = entered.trailing_zeros() as usize;
+                        entered &= entered - 1;
+                        let tl = t.0[lane];
+                        let mut k = top;
+                        while k > base && stack[k - 1].1 < tl {
+                            stack[k] = stack[k - 1];
+                            k -= 1;
                         }
+                        stack[k] = (n.child[lane], tl);
+                        top += 1;
                     }
                 }
-                Child::Leaf { first, count } => {
-                    let start = first as usize;
-                    for &i in &self.indices[start..start + count as usize] {
-                        if let Some(t) = visit(i as usize, t_max) {
-                            t_max = t;
-                        }
+                Child::Leaf(k) => {
+                    if let Some(t) = visit(k as usize, t_max) {
+                        t_max = t;
                     }
                 }
                 Child::Empty => {}

@@ -67,8 +67,8 @@ impl<F: Float> Sphere<F> {
         Some(if q < other { (q, other) } else { (other, q) })
     }
 
-    /// The hit at parameter `t`, with the point moved back onto the surface and its
-    /// rounding-error bound.
+    /// The hit at parameter `t` (a root from [`Sphere::roots`]), with the point moved back
+    /// onto the surface and its rounding-error bound: what [`Hittable::hit`] reports.
     ///
     /// # Precision
     /// pbrt-v4 §6.8.5: after reprojection `p ← C + (p − C)·r/|p − C|` each component of
@@ -77,7 +77,7 @@ impl<F: Float> Sphere<F> {
     /// the bound per component is `γ(5)|p − C| + γ(1)|p|`; we use `γ(6)|p − C| + γ(2)|p|`,
     /// since the tests see the tighter bound reached to 96 % in the worst of 10⁵ rays.
     #[inline]
-    fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
+    pub fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
         let local = ray.at(t) - self.center;
         let local = local * (self.radius / local.length());
         let point = self.center + local;
@@ -104,6 +104,11 @@ impl<F: Float> Hittable<F> for Sphere<F> {
     fn bounds(&self) -> Option<Aabb<F>> {
         let pad = (self.center.abs() + Vec3::splat(self.radius)) * F::gamma(1) + Vec3::splat(self.radius);
         Some(Aabb::new(self.center - pad, self.center + pad))
+    }
+
+    #[inline]
+    fn as_sphere(&self) -> Option<&Sphere<F>> {
+        Some(self)
     }
 }
 

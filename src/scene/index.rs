@@ -1,0 +1,242 @@
+//! How a scene finds what a ray hits: its objects in groups, spheres four at a time and
+//! the other shapes one by one, and a BVH over the groups once there are enough objects.
+
+use super::{Acceleration, Object};
+use crate::bvh::Bvh;
+use crate::float::Float;
+use crate::ray::Ray;
+use crate::shape::{Hit, Hittable, LANES, Sphere4};
+
+/// Four spheres and the objects they belong to.
+#[derive(Clone, Copy, Debug)]
+struct Packet<F> {
+    spheres: Sphere4<F>,
+    /// Object index of each lane (unused lanes hold an empty sphere and `u32::MAX`).
+    ids: [u32; LANES],
+}
+
+/// Objects tested together: `packets[packets.0..packets.1]`, `others[others.0..others.1]`.
+#[derive(Clone, Copy, Debug)]
+struct Group {
+    packets: (u32, u32),
+    others: (u32, u32),
+}
+
+/// A scene's intersection structure, built from its objects on the first query.
+///
+/// Group 0 holds every object tested by the plain loop: all of them, or with a BVH the
+/// unbounded ones (planes). With a BVH, group `k + 1` holds the objects of its leaf `k`.
+#[derive(Clone, Debug)]
+pub(super) struct Index<F> {
+    packets: Vec<Packet<F>>,
+    /// Objects that are not (known to be) spheres, by object index.
+    others: Vec<u32>,
+    groups: Vec<Group>,
+    bvh: Option<Bvh<F>>,
+}
+
+/// The nearest hit found so far: `t` and the object `id`, the sphere's record still to
+/// be made, or another shape's record.
+///
+/// A hit at the same `t` as the held one wins when its object comes first, so the answer
+/// is the loop's over the objects in order, whatever order the groups are visited in.
+struct Nearest<F> {
+    t: F,
+    id: u32,
+    found: Found<F>,
+}
+
+enum Found<F> {
+    Nothing,
+    Sphere,
+    Other(Hit<F>),
+}
+
+impl<F: Float> Nearest<F> {
+    /// Nothing found yet in `(0, t_max)`. (With nothing found, `id = 0` makes no tie win:
+    /// a hit must then lie strictly below `t_max`.)
+    fn new(t_max: F) -> Self {
+        Self {
+            t: t_max,
+            id: 0,
+            found: Found::Nothing,
+        }
+    }
+
+    fn found(&self) -> bool {
+        !matches!(self.found, Found::Nothing)
+    }
+
+    /// The exclusive bound below which a hit of object `id` can still win.
+    #[inline]
+    fn bound_for(&self, id: u32) -> F {
+        if self.found() && id < self.id {
+            self.t.next_up()
+        } else {
+            self.t
+        }
+    }
+
+    #[inline]
+    fn beaten_by(&self, t: F, id: u32) -> bool {
+        t < self.t || (t == self.t && id < self.id)
+    }
+}
+
+impl<F: Float> Index<F> {
+    /// Groups `objects` for `acceleration`.
+    pub(super) fn build<S: Hittable<F>, M>(objects: &[Object<S, M>], acceleration: Acceleration) -> Self {
+        let mut index = Self {
+            packets: Vec::new(),
+            others: Vec::new(),
+            groups: Vec::new(),
+            bvh: None,
+        };
+        let (mut bounded, mut boxes, mut unbounded) = (Vec::new(), Vec::new(), Vec::new());
+        for (i, o) in objects.iter().enumerate() {
+            match o.shape.bounds() {
+                Some(b) => {
+                    bounded.push(i as u32);
+                    boxes.push(b);
+                }
+                None => unbounded.push(i as u32),
+            }
+        }
+        let wanted = match acceleration {
+            Acceleration::Auto => bounded.len() >= Acceleration::AUTO_THRESHOLD,
+            Acceleration::Linear => false,
+            Acceleration::Bvh => true,
+        };
+        if !wanted {
+            index.push_group(0..objects.len() as u32, objects);
+            return index;
+        }
+        index.push_group(unbounded.into_iter(), objects);
+        let bvh = Bvh::build(&boxes);
+        for k in 0..bvh.leaf_count() {
+            index.push_group(bvh.leaf(k).iter().map(|&p| bounded[p as usize]), objects);
+        }
+        index.bvh = Some(bvh);
+        index
+    }
+
+    /// Appends a group of the objects `ids` (in increasing order).
+    fn push_group<S: Hittable<F>, M>(&mut self, ids: impl Iterator<Item = u32>, objects: &[Object<S, M>]) {
+        let first = (self.packets.len() as u32, self.others.len() as u32);
+        let mut spheres = Vec::new();
+        for id in ids {
+            match objects[id as usize].shape.as_sphere() {
+                Some(s) => spheres.push((id, *s)),
+                None => self.others.push(id),
+            }
+        }
+        for chunk in spheres.chunks(LANES) {
+            let mut ids = [u32::MAX; LANES];
+            for (lane, &(id, _)) in chunk.iter().enumerate() {
+                ids[lane] = id;
+            }
+            let shapes: Vec<_> = chunk.iter().map(|&(_, s)| s).collect();
+            self.packets.push(Packet {
+                spheres: Sphere4::new(&shapes),
+                ids,
+            });
+        }
+        self.groups.push(Group {
+            packets: (first.0, self.packets.len() as u32),
+            others: (first.1, self.others.len() as u32),
+        });
+    }
+
+    /// Whether a BVH is used.
+    pub(super) fn uses_bvh(&self) -> bool {
+        self.bvh.is_some()
+    }
+
+    /// The nearest hit in `(0, t_max)` and the object hit; at equal distance, the object
+    /// added first.
+    #[inline]
+    pub(super) fn hit<'a, S: Hittable<F>, M>(
+        &self,
+        objects: &'a [Object<S, M>],
+        ray: &Ray<F>,
+        t_max: F,
+    ) -> Option<(Hit<F>, &'a Object<S, M>)> {
+        let mut best = Nearest::new(t_max);
+        self.nearest_in(self.groups[0], objects, ray, &mut best);
+        if let Some(bvh) = &self.bvh {
+            bvh.traverse(ray, best.t, |k, _| {
+                self.nearest_in(self.groups[k + 1], objects, ray, &mut best)
+                    .then_some(best.t)
+            });
+        }
+        let object = objects.get(best.id as usize)?;
+        let hit = match best.found {
+            Found::Nothing => return None,
+            Found::Other(hit) => hit,
+            // Only the nearest sphere's record is made. (`as_sphere` answered when the
+            // packet was built; the fallback recomputes the same hit.)
+            Found::Sphere => match object.shape.as_sphere() {
+                Some(s) => s.hit_at(ray, best.t),
+                None => object.shape.hit(ray, best.t.next_up())?,
+            },
+        };
+        Some((hit, object))
+    }
+
+    /// Updates `best` with the objects of group `g`; whether it changed.
+    #[inline(always)]
+    fn nearest_in<S: Hittable<F>, M>(
+        &self,
+        g: Group,
+        objects: &[Object<S, M>],
+        ray: &Ray<F>,
+        best: &mut Nearest<F>,
+    ) -> bool {
+        let mut changed = false;
+        for p in &self.packets[g.packets.0 as usize..g.packets.1 as usize] {
+            let t = p.spheres.hits(ray);
+            let nearest = t.min_lane();
+            // Most packets hold nothing nearer. Lanes follow the objects' order, so of
+            // equally near lanes the first is the packet's answer.
+            if nearest < F::infinity() && nearest <= best.t {
+                let id = p.ids[t.mask_eq(nearest).trailing_zeros() as usize];
+                if best.beaten_by(nearest, id) {
+                    (best.t, best.id, best.found) = (nearest, id, Found::Sphere);
+                    changed = true;
+                }
+            }
+        }
+        for &id in &self.others[g.others.0 as usize..g.others.1 as usize] {
+            if let Some(hit) = objects[id as usize].shape.hit(ray, best.bound_for(id))
+                && best.beaten_by(hit.t, id)
+            {
+                (best.t, best.id, best.found) = (hit.t, id, Found::Other(hit));
+                changed = true;
+            }
+        }
+        changed
+    }
+
+    /// Whether any object blocks the ray in `(0, t_max)`; stops at the first.
+    #[inline]
+    pub(super) fn occluded<S: Hittable<F>, M>(
+        &self,
+        objects: &[Object<S, M>],
+        ray: &Ray<F>,
+        t_max: F,
+    ) -> bool {
+        let blocks = |g: Group| {
+            self.packets[g.packets.0 as usize..g.packets.1 as usize]
+                .iter()
+                .any(|p| p.spheres.any(ray, t_max))
+                || self.others[g.others.0 as usize..g.others.1 as usize]
+                    .iter()
+                    .any(|&id| objects[id as usize].shape.occluded(ray, t_max))
+        };
+        blocks(self.groups[0])
+            || self
+                .bvh
+                .as_ref()
+                .is_some_and(|bvh| bvh.any(ray, t_max, |k| blocks(self.groups[k + 1])))
+    }
+}
