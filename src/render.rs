@@ -5,19 +5,18 @@ mod seed;
 mod settings;
 mod trace;
 
-pub use seed::{pixel_seed, sample_seed};
+pub use seed::pixel_seed;
 pub use settings::{Rect, RenderSettings};
-pub use trace::{BATCH, Tracer};
+pub use trace::Tracer;
 
 use crate::camera::Camera;
 use crate::error::Result;
 use crate::float::{Float, lit};
 use crate::image::Image;
 use crate::material::Material;
-use crate::ray::Ray;
 use crate::scene::Scene;
 use crate::shape::Hittable;
-use crate::vec3::{Color, Vec3};
+use crate::vec3::Color;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rand::{Rng, SeedableRng};
 use rayon::prelude::*;
@@ -101,16 +100,14 @@ where
 
 /// Renders the pixels of `tile`, in parallel on the current rayon thread pool.
 ///
-/// Each sample draws from its own generator, seeded from the render seed, the pixel's
-/// index in the **whole** image and the sample's number ([`sample_seed`]), never from a
-/// thread or a batch: the result is bit-identical for any number of threads, and a tile
-/// equals the same pixels of the whole image, so tiles can be rendered anywhere and
-/// stitched.
+/// Each pixel draws from its own generator, seeded from the render seed and the pixel's
+/// index in the **whole** image ([`pixel_seed`]), never from a thread: the result is
+/// bit-identical for any number of threads, and a tile equals the same pixels of the
+/// whole image, so tiles can be rendered anywhere and stitched.
 ///
 /// With one sample per pixel the ray goes through the pixel centre (the specification's
 /// basic mode); with more, each sample goes through a uniform random point of the pixel's
-/// cell and the pixel is their mean. Samples are traced [`BATCH`] at a time along each
-/// row ([`Tracer::trace_batch`]), which changes nothing in the image.
+/// cell and the pixel is their mean.
 ///
 /// # Errors
 /// Invalid settings, or a tile outside the camera's image.
@@ -137,8 +134,14 @@ where
         .par_chunks_mut(tile.width)
         .enumerate()
         .map(|(row, pixels)| {
+            let y = tile.y + row;
             let mut tracer = Tracer::new(scene, settings.max_depth);
-            render_row::<R, _, _, _, _>(&mut tracer, camera, settings, tile.x, tile.y + row, pixels);
+            for (col, out) in pixels.iter_mut().enumerate() {
+                let x = tile.x + col;
+                let index = (y * camera.width() + x) as u64;
+                let mut rng = R::seed_from_u64(pixel_seed(settings.seed, index));
+                *out = sample_pixel(&mut tracer, camera, x, y, settings.samples_per_pixel, &mut rng).to_f64();
+            }
             progress.inc(1);
             tracer.rays()
         })
@@ -154,73 +157,35 @@ where
     })
 }
 
-/// Renders `pixels`, the row `y` from column `x0`: its samples in order, [`BATCH`] at a
-/// time, each pixel the mean of its own.
-fn render_row<R, F, S, M, C>(
+/// The mean colour of `spp` samples of pixel `(x, y)`.
+#[inline]
+fn sample_pixel<R, F, S, M, C>(
     tracer: &mut Tracer<'_, F, S, M>,
     camera: &C,
-    settings: &RenderSettings,
-    x0: usize,
+    x: usize,
     y: usize,
-    pixels: &mut [[f64; 3]],
-) where
-    R: Rng + SeedableRng,
+    spp: u32,
+    rng: &mut R,
+) -> Color<F>
+where
+    R: Rng + ?Sized,
     F: Float,
     S: Hittable<F>,
     M: Material<F, R>,
     C: Camera<F>,
 {
-    let spp = settings.samples_per_pixel;
-    let mut samples = (0..pixels.len()).flat_map(|col| (0..spp).map(move |s| (col, s)));
-    let slots: [usize; BATCH] = std::array::from_fn(|i| i);
-    let mut rngs: [R; BATCH] = std::array::from_fn(|_| R::seed_from_u64(0));
-    let mut rays = [Ray::new(Vec3::zero(), Vec3::new(F::zero(), F::zero(), -F::one())); BATCH];
-    let mut items = [(0usize, 0u32); BATCH];
-    let mut sum = Color::zero();
-    loop {
-        // The next batch of samples: each its own generator and camera ray.
-        let mut n = 0;
-        for (col, s) in samples.by_ref().take(BATCH) {
-            let (x, index) = (x0 + col, (y * camera.width() + x0 + col) as u64);
-            rngs[n] = R::seed_from_u64(sample_seed(settings.seed, index, s));
-            rays[n] = sample_ray(camera, x, y, spp, &mut rngs[n]);
-            items[n] = (col, s);
-            n += 1;
-        }
-        if n == 0 {
-            return;
-        }
-        let colours = tracer.trace_batch(&rays[..n], 0, &mut rngs.each_mut(), &slots);
-        for (&(col, s), colour) in items[..n].iter().zip(colours) {
-            if spp == 1 {
-                pixels[col] = colour.to_f64();
-                continue;
-            }
-            sum = sum + colour;
-            if s + 1 == spp {
-                // Each sample is finite, but their sum may overflow: cap the mean again.
-                pixels[col] = trace::saturate(sum / lit(f64::from(spp))).to_f64();
-                sum = Color::zero();
-            }
-        }
-    }
-}
-
-/// The camera ray of one sample of pixel `(x, y)`: through the pixel centre when it is
-/// the only sample, else through a uniform random point of the pixel's cell.
-#[inline]
-fn sample_ray<R, F, C>(camera: &C, x: usize, y: usize, spp: u32, rng: &mut R) -> Ray<F>
-where
-    R: Rng + ?Sized,
-    F: Float,
-    C: Camera<F>,
-{
     let (px, py) = (lit::<F>(x as f64), lit::<F>(y as f64));
     if spp == 1 {
-        return camera.ray(px, py);
+        return tracer.trace(&camera.ray(px, py), 0, rng);
     }
-    let (dx, dy) = crate::sampling::pixel_jitter(rng);
-    camera.ray(px + lit(dx), py + lit(dy))
+    let mut sum = Color::zero();
+    for _ in 0..spp {
+        let (dx, dy) = crate::sampling::pixel_jitter(rng);
+        let ray = camera.ray(px + lit(dx), py + lit(dy));
+        sum = sum + tracer.trace(&ray, 0, rng);
+    }
+    // Each sample is finite, but their sum may overflow: cap the mean again.
+    trace::saturate(sum / lit(f64::from(spp)))
 }
 
 /// A progress bar on stderr (work done, rate, time left), hidden unless asked for and

@@ -1,12 +1,4 @@
-//! Per-sample random streams.
-
-/// The seed of the generator of sample `sample` of pixel `index`: [`pixel_seed`] mixed
-/// once more with the sample number, so every sample has its own stream and no sample's
-/// draws depend on how many its neighbours made.
-#[inline]
-pub fn sample_seed(seed: u64, index: u64, sample: u32) -> u64 {
-    splitmix64(pixel_seed(seed, index) ^ u64::from(sample).wrapping_mul(0xD1B5_4A32_D192_ED03))
-}
+//! Per-pixel random streams.
 
 /// The seed of pixel `index`'s generator: SplitMix64 (Steele et al. 2014) applied to the
 /// render seed plus `index` Weyl steps, then once more, so neighbouring pixels and
@@ -36,7 +28,5 @@ mod tests {
         assert_ne!(pixel_seed(0, 0), pixel_seed(0, 1));
         assert_ne!(pixel_seed(0, 1), pixel_seed(1, 0));
         assert_eq!(pixel_seed(42, 7), pixel_seed(42, 7));
-        assert_ne!(sample_seed(0, 0, 0), sample_seed(0, 0, 1));
-        assert_ne!(sample_seed(0, 1, 0), sample_seed(0, 0, 1));
     }
 }

@@ -18,9 +18,6 @@ pub(crate) fn saturate<F: Float>(c: Color<F>) -> Color<F> {
     c.map(|x| if x > F::max_value() { F::max_value() } else { x })
 }
 
-/// Most rays a [`Tracer`] traces together ([`Tracer::trace_batch`]).
-pub const BATCH: usize = 4;
-
 /// Traces rays through one scene and counts them.
 pub struct Tracer<'a, F, S, M> {
     scene: &'a Scene<F, S, M>,
@@ -49,81 +46,27 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
     /// - it hits a surface after `max_depth` bounces: black `(0, 0, 0)`;
     /// - otherwise: the direct light from point lights (matte surfaces only) plus
     ///   `A ∘ trace(scattered, depth + 1)`, or black if the material absorbs the ray.
-    ///
-    /// The same as [`Tracer::trace_batch`] on this one ray.
     pub fn trace<R>(&mut self, ray: &Ray<F>, depth: u32, rng: &mut R) -> Color<F>
     where
         R: Rng + ?Sized,
         M: Material<F, R>,
     {
-        self.trace_batch(std::slice::from_ref(ray), depth, &mut [rng], &[0])[0]
-    }
-
-    /// [`trace`](Tracer::trace) for up to [`BATCH`] independent rays at once: ray `i` draws
-    /// only from `rngs[slots[i]]`, so its colour is exactly the one `trace` gives it alone.
-    ///
-    /// The recursion is the same, one batch at a time: every ray of the batch is
-    /// intersected, then shaded, and the rays that scatter are traced, together, one
-    /// bounce deeper. Why batch: a path is one long chain of dependent steps (hit point,
-    /// direction, next hit), so tracing one ray leaves the processor waiting on latencies;
-    /// several independent rays side by side fill those waits.
-    ///
-    /// # Panics
-    /// If there are more than [`BATCH`] rays, or fewer slots than rays.
-    pub fn trace_batch<R>(
-        &mut self,
-        rays: &[Ray<F>],
-        depth: u32,
-        rngs: &mut [&mut R],
-        slots: &[usize],
-    ) -> [Color<F>; BATCH]
-    where
-        R: Rng + ?Sized,
-        M: Material<F, R>,
-    {
-        let n = rays.len();
-        assert!(
-            n <= BATCH && slots.len() >= n,
-            "a batch holds at most {BATCH} rays"
-        );
-        self.rays += n as u64;
-        let scene = self.scene;
-        // Intersect every ray first: the searches are independent, so they overlap.
-        let hits: [_; BATCH] = std::array::from_fn(|i| rays.get(i).and_then(|r| scene.hit(r, F::infinity())));
-        let mut colours = [Color::zero(); BATCH];
-        // The rays that go on: where from (`from[k]`), their direct light and attenuation.
-        let (mut next, mut from, mut m) = ([rays[0]; BATCH], [0usize; BATCH], 0);
-        let (mut direct, mut attenuation) = ([Color::zero(); BATCH], [Color::zero(); BATCH]);
-        for (i, hit) in hits.into_iter().enumerate().take(n) {
-            let ray = &rays[i];
-            let Some((hit, material)) = hit else {
-                colours[i] = scene.background().color(ray.direction);
-                continue;
-            };
-            if depth >= self.max_depth {
-                continue;
-            }
-            let light = match material.diffuse_albedo() {
-                Some(albedo) if !scene.lights().is_empty() => self.direct_light(&hit, albedo),
-                _ => Color::zero(),
-            };
-            match material.scatter(ray, &hit, &mut *rngs[slots[i]]) {
-                Some(s) => {
-                    (next[m], from[m]) = (hit.spawn(s.direction), i);
-                    (direct[m], attenuation[m]) = (light, s.attenuation);
-                    m += 1;
-                }
-                None => colours[i] = saturate(light),
-            }
+        self.rays += 1;
+        let Some((hit, material)) = self.scene.hit(ray, F::infinity()) else {
+            return self.scene.background().color(ray.direction);
+        };
+        if depth >= self.max_depth {
+            return Color::zero();
         }
-        if m > 0 {
-            let next_slots: [usize; BATCH] = std::array::from_fn(|k| slots[from[k]]);
-            let incoming = self.trace_batch(&next[..m], depth + 1, rngs, &next_slots[..m]);
-            for k in 0..m {
-                colours[from[k]] = saturate(direct[k] + attenuation[k] * incoming[k]);
-            }
-        }
-        colours
+        let direct = match material.diffuse_albedo() {
+            Some(albedo) if !self.scene.lights().is_empty() => self.direct_light(&hit, albedo),
+            _ => Color::zero(),
+        };
+        let colour = match material.scatter(ray, &hit, rng) {
+            Some(s) => direct + s.attenuation * self.trace(&hit.spawn(s.direction), depth + 1, rng),
+            None => direct,
+        };
+        saturate(colour)
     }
 
     /// Light arriving straight from the point lights at a matte hit with albedo `A`:
