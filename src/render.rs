@@ -178,10 +178,19 @@ where
     if spp == 1 {
         return tracer.trace(&camera.ray(px, py), 0, rng);
     }
-    let mut sum = Color::zero();
-    for _ in 0..spp {
+    let jittered = |rng: &mut R| {
         let (dx, dy) = crate::sampling::pixel_jitter(rng);
-        let ray = camera.ray(px + lit(dx), py + lit(dy));
+        camera.ray(px + lit(dx), py + lit(dy))
+    };
+    let mut sum = Color::zero();
+    // Samples in pairs, traced side by side (the second's jitter drawn before the first's path).
+    for _ in 0..spp / 2 {
+        let (a, b) = (jittered(rng), jittered(rng));
+        let (ca, cb) = tracer.trace_pair(&a, &b, 0, rng);
+        sum = sum + ca + cb;
+    }
+    if spp % 2 == 1 {
+        let ray = jittered(rng);
         sum = sum + tracer.trace(&ray, 0, rng);
     }
     // Each sample is finite, but their sum may overflow: cap the mean again.

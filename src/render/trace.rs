@@ -18,6 +18,13 @@ pub(crate) fn saturate<F: Float>(c: Color<F>) -> Color<F> {
     c.map(|x| if x > F::max_value() { F::max_value() } else { x })
 }
 
+/// One bounce's outcome: the ray's colour, or the next ray with the direct light and the
+/// attenuation that combine with the colour it brings back.
+enum Step<F> {
+    Done(Color<F>),
+    Go(Ray<F>, Color<F>, Color<F>),
+}
+
 /// Traces rays through one scene and counts them.
 pub struct Tracer<'a, F, S, M> {
     scene: &'a Scene<F, S, M>,
@@ -52,21 +59,66 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
         M: Material<F, R>,
     {
         self.rays += 1;
-        let Some((hit, material)) = self.scene.hit(ray, F::infinity()) else {
-            return self.scene.background().color(ray.direction);
+        let hit = self.scene.hit(ray, F::infinity());
+        match self.shade(ray, hit, depth, rng) {
+            Step::Done(colour) => colour,
+            Step::Go(next, direct, attenuation) => {
+                saturate(direct + attenuation * self.trace(&next, depth + 1, rng))
+            }
+        }
+    }
+
+    /// [`trace`](Tracer::trace) for two independent rays side by side, drawing from one
+    /// generator (the first ray's draws at each bounce come before the second's).
+    ///
+    /// A path is one long chain of dependent steps (hit point, direction, next hit), so a
+    /// lone ray leaves the processor waiting on latencies; two independent chains
+    /// interleaved fill those waits.
+    pub fn trace_pair<R>(&mut self, a: &Ray<F>, b: &Ray<F>, depth: u32, rng: &mut R) -> (Color<F>, Color<F>)
+    where
+        R: Rng + ?Sized,
+        M: Material<F, R>,
+    {
+        self.rays += 2;
+        let (hit_a, hit_b) = (self.scene.hit(a, F::infinity()), self.scene.hit(b, F::infinity()));
+        let step_a = self.shade(a, hit_a, depth, rng);
+        let step_b = self.shade(b, hit_b, depth, rng);
+        let end = |direct: Color<F>, attenuation: Color<F>, incoming: Color<F>| {
+            saturate(direct + attenuation * incoming)
+        };
+        match (step_a, step_b) {
+            (Step::Done(ca), Step::Done(cb)) => (ca, cb),
+            (Step::Go(ra, da, aa), Step::Done(cb)) => (end(da, aa, self.trace(&ra, depth + 1, rng)), cb),
+            (Step::Done(ca), Step::Go(rb, db, ab)) => (ca, end(db, ab, self.trace(&rb, depth + 1, rng))),
+            (Step::Go(ra, da, aa), Step::Go(rb, db, ab)) => {
+                let (ia, ib) = self.trace_pair(&ra, &rb, depth + 1, rng);
+                (end(da, aa, ia), end(db, ab, ib))
+            }
+        }
+    }
+
+    /// What a ray's hit (or miss) does: a final colour, or the ray to trace next with the
+    /// direct light and attenuation to combine with what it brings back.
+    #[inline(always)]
+    fn shade<R>(&mut self, ray: &Ray<F>, hit: Option<(Hit<F>, &M)>, depth: u32, rng: &mut R) -> Step<F>
+    where
+        R: Rng + ?Sized,
+        M: Material<F, R>,
+    {
+        let Some((hit, material)) = hit else {
+            return Step::Done(self.scene.background().color(ray.direction));
         };
         if depth >= self.max_depth {
-            return Color::zero();
+            return Step::Done(Color::zero());
         }
         let direct = match material.diffuse_albedo() {
             Some(albedo) if !self.scene.lights().is_empty() => self.direct_light(&hit, albedo),
             _ => Color::zero(),
         };
-        let colour = match material.scatter(ray, &hit, rng) {
-            Some(s) => direct + s.attenuation * self.trace(&hit.spawn(s.direction), depth + 1, rng),
-            None => direct,
-        };
-        saturate(colour)
+        match material.scatter(ray, &hit, rng) {
+            Some(s) => Step::Go(hit.spawn(s.direction), direct, s.attenuation),
+            None => Step::Done(saturate(direct)),
+        }
     }
 
     /// Light arriving straight from the point lights at a matte hit with albedo `A`:
