@@ -82,6 +82,13 @@ impl<F: Float> F4<F> {
         a | (b << 1) | (c << 2) | (d << 3)
     }
 
+    /// Bit `k` set where lane `k` of `a` is `<= ` lane `k` of `b`.
+    #[inline(always)]
+    pub fn mask_le(a: Self, b: Self) -> u32 {
+        let m = |k: usize| u32::from(a.0[k] <= b.0[k]) << k;
+        m(0) | m(1) | m(2) | m(3)
+    }
+
     /// Bit `k` set where lane `k` is `< bound`.
     #[inline(always)]
     pub fn mask_lt(self, bound: F) -> u32 {

@@ -110,12 +110,12 @@ impl<F: Float> WideRay<F> {
         }
     }
 
-    /// The entry distance into each of the node's four boxes, or +∞ where the ray misses
-    /// it in `(0, t_max]`. Same slab test as [`crate::aabb::RayBoxTest::entry`], one axis
+    /// The entry distance into each of the node's four boxes, and the mask of the boxes
+    /// the ray meets in `(0, t_max]`. Same slab test as [`crate::aabb::RayBoxTest::entry`], one axis
     /// at a time over the four lanes; a ray lying in a slab's plane gives `0·∞ = NaN`
     /// there, which fails the comparisons and so constrains nothing.
     #[inline(always)]
-    fn entries(&self, n: &Wide<F>, t_max: F) -> F4<F> {
+    fn entries(&self, n: &Wide<F>, t_max: F) -> (F4<F>, u32) {
         let mut t0 = F4::splat(F::zero());
         let mut t1 = F4::splat(t_max);
         for axis in 0..3 {
@@ -130,7 +130,7 @@ impl<F: Float> WideRay<F> {
             t0 = F4::select_lt(t0, t_near, t_near, t0);
             t1 = F4::select_lt(t_far, t1, t_far, t1);
         }
-        F4::select_lt(t1, t0, F4::splat(F::infinity()), t0)
+        (t0, F4::mask_le(t0, t1))
     }
 }
 
@@ -155,8 +155,7 @@ impl<F: Float> Bvh<F> {
             match current {
                 Child::Node(i) => {
                     let n = &self.wide[i as usize];
-                    let t = r.entries(n, t_max);
-                    let mut entered = t.mask_lt(F::infinity());
+                    let (t, mut entered) = r.entries(n, t_max);
                     if entered.count_ones() == 1 {
                         // One child entered (the common case): go straight down.
                         current = n.child[entered.trailing_zeros() as usize];
