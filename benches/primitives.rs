@@ -1,12 +1,13 @@
-//! Micro-benchmarks: vector operations, ray–sphere (textbook vs stable, f32 vs f64),
-//! each material's scatter, and the spec's rejection sampler against its alternatives.
+//! Micro-benchmarks: vector operations, ray–sphere (textbook vs stable, one sphere vs four
+//! at once, f32 vs f64), ray–triangle, each material's scatter, and the spec's rejection
+//! sampler against its alternatives.
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use rand::{RngExt, SeedableRng};
 use rand_distr::{Distribution, UnitSphere};
 use raytrace::prelude::*;
 use raytrace::sampling::{cosine_direction, lambertian_direction, unit_sphere_rejection};
-use raytrace::shape::{Hit, textbook_sphere_hit};
+use raytrace::shape::{Hit, Sphere4, textbook_sphere_hit};
 use raytrace::{DefaultRng, Material};
 use std::hint::black_box;
 
@@ -54,6 +55,40 @@ fn sphere<F: Float>(c: &mut Criterion) {
                 .count()
         })
     });
+    // Four spheres per ray: one at a time (full hit records) against one packet.
+    let four: Vec<Sphere<F>> = (0..4)
+        .map(|i| Sphere::new(Vec3::from_f64(f64::from(i) - 1.5, 0.0, -4.0), lit(0.6)).unwrap())
+        .collect();
+    let packet = Sphere4::new(&four);
+    g.bench_function(BenchmarkId::new(F::NAME, "4-spheres-one-by-one"), |b| {
+        b.iter(|| {
+            rays.iter()
+                .filter(|r| four.iter().any(|s| s.hit(black_box(r), F::infinity()).is_some()))
+                .count()
+        })
+    });
+    g.bench_function(BenchmarkId::new(F::NAME, "4-spheres-packet"), |b| {
+        b.iter(|| {
+            rays.iter()
+                .filter(|r| packet.any(black_box(r), F::infinity()))
+                .count()
+        })
+    });
+    g.finish();
+}
+
+fn triangle<F: Float>(c: &mut Criterion) {
+    let mut g = c.benchmark_group("ray-triangle");
+    let p = |x, y, z| Vec3::from_f64(x, y, z);
+    let t = Triangle::new(p(-1.5, -1.0, -4.0), p(1.5, -1.0, -4.0), p(0.0, 1.5, -4.0)).unwrap();
+    let rays = rays::<F>();
+    g.bench_function(BenchmarkId::new(F::NAME, "watertight"), |b| {
+        b.iter(|| {
+            rays.iter()
+                .filter(|r| t.hit(black_box(r), F::infinity()).is_some())
+                .count()
+        })
+    });
     g.finish();
 }
 
@@ -63,12 +98,13 @@ fn scatter<F: Float>(c: &mut Criterion) {
     let n = Vec3::from_f64(0.0, 1.0, 0.0);
     let hit = Hit::new(lit(2.0), ray.at(lit(2.0)), Vec3::zero(), n, ray.direction);
     let mut rng = DefaultRng::seed_from_u64(2);
-    let materials: [(&str, MaterialKind<F>); 2] = [
+    let materials: [(&str, MaterialKind<F>); 3] = [
         ("mirror", Mirror::new(Vec3::splat(lit(0.9))).unwrap().into()),
         (
             "lambertian",
             Lambertian::new(Vec3::splat(lit(0.5))).unwrap().into(),
         ),
+        ("dielectric", Dielectric::new(lit(1.5)).unwrap().into()),
     ];
     for (name, m) in materials {
         g.bench_function(BenchmarkId::new(F::NAME, name), |b| {
@@ -102,6 +138,8 @@ fn all(c: &mut Criterion) {
     vec3_ops::<f64>(c);
     sphere::<f32>(c);
     sphere::<f64>(c);
+    triangle::<f32>(c);
+    triangle::<f64>(c);
     scatter::<f32>(c);
     scatter::<f64>(c);
     samplers(c);

@@ -36,6 +36,16 @@ fn small_renders<F: Float>(c: &mut Criterion) {
         b.iter(|| single(|| render(&matte, &cam, &s10).unwrap().stats.rays))
     });
     g.finish();
+    // The book's final scene through its BVH, at depth 50 as in the example.
+    let mut g = c.benchmark_group("render-160x90");
+    g.sample_size(10);
+    let look = scenes::random_spheres_camera::<F>(160).unwrap();
+    let random = scenes::random_spheres::<F>(0).unwrap();
+    let s4 = RenderSettings::new(4, 50, 0).unwrap();
+    g.bench_function(BenchmarkId::new(F::NAME, "random_spheres/4spp"), |b| {
+        b.iter(|| single(|| render(&random, &look, &s4).unwrap().stats.rays))
+    });
+    g.finish();
 }
 
 fn one_path<F: Float>(c: &mut Criterion) {
