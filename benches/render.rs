@@ -138,7 +138,7 @@ fn bvh_threshold(c: &mut Criterion) {
     g.sample_size(10);
     let cam = ScreenCamera::new(160, 80).unwrap();
     let s = RenderSettings::new(2, 10, 0).unwrap();
-    for n in [1, 2, 4, 6, 8, 12, 16, 32, 64] {
+    for n in [1, 2, 4, 6, 8, 12, 16, 20, 24, 32, 64] {
         for (name, acc) in [("loop", Acceleration::Linear), ("bvh", Acceleration::Bvh)] {
             let mut scene = spheres(n);
             scene.set_acceleration(acc);
