@@ -302,3 +302,92 @@ fn the_spec_ppm_round_trips_through_the_reader() {
     );
     assert!(first[2] > first[0], "top-left pixel should be sky blue");
 }
+
+/// Two rays traced side by side bring back exactly what each brings back alone (in a
+/// scene of mirrors, which draws no random numbers, so the shared stream cannot differ):
+/// whichever of the two stops first, at whatever depth.
+#[test]
+fn a_pair_of_rays_traces_as_each_alone() {
+    fn check<F: Float>() {
+        let mut scene = EnumScene::<F>::new(Background::default());
+        let s = |x, y, z, r| Sphere::new(Vec3::from_f64(x, y, z), lit(r)).unwrap();
+        let m = |a| Mirror::new(Vec3::splat(lit(a))).unwrap();
+        scene.add(s(-1.0, 0.0, -3.0, 0.9), m(0.9));
+        scene.add(s(1.0, 0.0, -3.0, 0.9), m(0.8));
+        scene.add(s(0.0, -100.9, -3.0, 100.0), m(0.7));
+        let cam = ScreenCamera::new(64, 32).unwrap();
+        let mut rng = DefaultRng::seed_from_u64(1);
+        for depth in [0, 1, 3, 10] {
+            let mut tracer = Tracer::new(&scene, depth);
+            for (i, j) in (0..64).zip((0..32).cycle()) {
+                let a = cam.ray(lit(f64::from(i)), lit(f64::from(j)));
+                let b = cam.ray(lit(f64::from(63 - i)), lit(f64::from(31 - j) * 0.5));
+                let alone = (tracer.trace(&a, 0, &mut rng), tracer.trace(&b, 0, &mut rng));
+                assert_eq!(
+                    tracer.trace_pair(&a, &b, 0, &mut rng),
+                    alone,
+                    "depth {depth}, {a:?} {b:?}"
+                );
+            }
+        }
+    }
+    check::<f32>();
+    check::<f64>();
+}
+
+/// Objects hit at exactly the same distance: the one added first wins, through the plain
+/// loop (spheres packed four at a time), the BVH, and the trait objects alike.
+#[test]
+fn ties_go_to_the_object_added_first_on_every_path() {
+    use raytrace::Acceleration;
+    let ray = Ray::new(Vec3::zero(), Vec3::new(0.0, 0.0, -1.0));
+    for first in [0usize, 3, 5, 9] {
+        // Ten spheres; two of them, `first` and 9, are the same sphere in front.
+        let build = || {
+            (0..10).map(move |i| {
+                let c = if i == first || i == 9 {
+                    Vec3::new(0.0, 0.0, -4.0)
+                } else {
+                    Vec3::new(i as f64, 3.0, -4.0)
+                };
+                (
+                    Sphere::new(c, 1.0).unwrap(),
+                    Mirror::new(Vec3::splat(0.01 * i as f64)).unwrap(),
+                )
+            })
+        };
+        for acceleration in [Acceleration::Linear, Acceleration::Bvh] {
+            let mut scene = EnumScene::<f64>::new(Background::default());
+            let mut dyn_scene = DynScene::<f64, DefaultRng>::new(Background::default());
+            for (s, m) in build() {
+                scene.add(s, m);
+                dyn_scene.add(
+                    Box::new(s) as Box<dyn Hittable<f64> + Send + Sync>,
+                    Arc::new(m) as Arc<dyn Material<f64, DefaultRng> + Send + Sync>,
+                );
+            }
+            scene.set_acceleration(acceleration);
+            dyn_scene.set_acceleration(acceleration);
+            let (hit, material) = scene.hit(&ray, f64::INFINITY).unwrap();
+            assert_eq!(hit.t, 3.0);
+            let want = Mirror::new(Vec3::splat(0.01 * first as f64)).unwrap();
+            assert_eq!(
+                *material,
+                MaterialKind::from(want),
+                "{acceleration:?}, first {first}"
+            );
+            let (dyn_hit, dyn_material) = dyn_scene.hit(&ray, f64::INFINITY).unwrap();
+            assert_eq!(dyn_hit, hit);
+            let probe = Hit::new(
+                1.0,
+                Vec3::zero(),
+                Vec3::zero(),
+                Vec3::new(0.0, 0.0, 1.0),
+                ray.direction,
+            );
+            let mut rng = DefaultRng::seed_from_u64(0);
+            let got = dyn_material.scatter(&ray, &probe, &mut rng).unwrap().attenuation;
+            assert_eq!(got, want.albedo(), "dyn {acceleration:?}, first {first}");
+        }
+    }
+}
