@@ -295,6 +295,23 @@ mod tests {
     use super::*;
     use rand::{RngExt, SeedableRng};
 
+    /// The primitives whose boxes `ray` meets, found through the BVH's leaves and by brute
+    /// force, each sorted.
+    fn through_bvh_and_brute_force<F: Float>(
+        bvh: &Bvh<F>,
+        boxes: &[Aabb<F>],
+        ray: &Ray<F>,
+    ) -> (Vec<usize>, Vec<usize>) {
+        let meets = |i: usize| boxes[i].hit(ray, F::infinity());
+        let mut got = Vec::new();
+        bvh.traverse(ray, F::infinity(), |k, _| {
+            got.extend(bvh.leaf(k).iter().map(|&i| i as usize).filter(|&i| meets(i)));
+            None
+        });
+        got.sort();
+        (got, (0..boxes.len()).filter(|&i| meets(i)).collect())
+    }
+
     /// Random little boxes; every ray's BVH answer must equal brute force.
     #[test]
     fn matches_brute_force() {
@@ -326,21 +343,7 @@ mod tests {
                 continue;
             };
             let ray = Ray::new(o, d);
-            let mut want: Vec<usize> = (0..boxes.len())
-                .filter(|&i| boxes[i].hit(&ray, f64::INFINITY))
-                .collect();
-            let mut got = Vec::new();
-            bvh.traverse(&ray, f64::INFINITY, |k, _| {
-                got.extend(
-                    bvh.leaf(k)
-                        .iter()
-                        .filter(|&&i| boxes[i as usize].hit(&ray, f64::INFINITY))
-                        .map(|&i| i as usize),
-                );
-                None
-            });
-            got.sort();
-            want.sort();
+            let (got, want) = through_bvh_and_brute_force(&bvh, &boxes, &ray);
             assert_eq!(got, want);
             let any_box = |k: usize| {
                 bvh.leaf(k)
@@ -370,21 +373,7 @@ mod tests {
                     Vec3::new(1.0, 0.0, 0.0),
                 ] {
                     let ray = Ray::new(Vec3::new(x, y, if d.z > 0.0 { -10.0 } else { 1.0 }), d);
-                    let mut want: Vec<usize> = (0..boxes.len())
-                        .filter(|&i| boxes[i].hit(&ray, f32::INFINITY))
-                        .collect();
-                    let mut got = Vec::new();
-                    bvh.traverse(&ray, f32::INFINITY, |k, _| {
-                        got.extend(
-                            bvh.leaf(k)
-                                .iter()
-                                .filter(|&&i| boxes[i as usize].hit(&ray, f32::INFINITY))
-                                .map(|&i| i as usize),
-                        );
-                        None
-                    });
-                    got.sort();
-                    want.sort();
+                    let (got, want) = through_bvh_and_brute_force(&bvh, &boxes, &ray);
                     assert_eq!(got, want, "{ray:?}");
                 }
             }

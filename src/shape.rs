@@ -114,6 +114,9 @@ pub trait Hittable<F: Float> {
     /// vtable): a trait object hides what it is, so a scene of `Box<dyn Hittable>` tests
     /// each shape through its own [`hit`](Hittable::hit). This layout is what the enum
     /// fast path buys beyond the `match` itself.
+    ///
+    /// An implementor that answers `Some(s)` promises that its `hit` is `s.hit`: the scene
+    /// then tests `s` instead.
     #[inline]
     fn as_sphere(&self) -> Option<&Sphere<F>>
     where

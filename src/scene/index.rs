@@ -46,6 +46,8 @@ struct Nearest<F> {
     found: Found<F>,
 }
 
+/// What [`Nearest`] holds: nothing yet, a packed sphere (its record made at the end), or
+/// another shape's record.
 enum Found<F> {
     Nothing,
     Sphere,
@@ -77,6 +79,7 @@ impl<F: Float> Nearest<F> {
         }
     }
 
+    /// Whether a hit of object `id` at `t` is nearer, or as near and of an earlier object.
     #[inline]
     fn beaten_by(&self, t: F, id: u32) -> bool {
         t < self.t || (t == self.t && id < self.id)
