@@ -552,11 +552,12 @@ fn check_settings_and_image(
     (w, h): (usize, usize),
 ) -> Result<(), TestCaseError> {
     let spp_ok = Verdict::from_bool(spp >= 1);
+    let depth_ok = Verdict::from_bool(depth <= 1000);
     let call = format!("RenderSettings::new({spp}, {depth}, {seed})");
     expect(
         &call,
         RenderSettings::new(spp, depth, seed),
-        &[("samples per pixel", spp_ok)],
+        &[("samples per pixel", spp_ok), ("max depth", depth_ok)],
     )?;
     // A valid size allocates `w·h` pixels: only small valid images are built.
     let ok = size_ok(w, h);
@@ -660,7 +661,7 @@ proptest! {
     #[test]
     fn settings_and_image(
         spp in prop_oneof![Just(0u32), Just(1u32), any::<u32>()],
-        depth in any::<u32>(),
+        depth in prop_oneof![Just(1000u32), Just(1001u32), 0..2000u32, any::<u32>()],
         seed in any::<u64>(),
         wh in size(),
     ) {

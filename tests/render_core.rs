@@ -391,3 +391,29 @@ fn ties_go_to_the_object_added_first_on_every_path() {
         }
     }
 }
+
+/// The deepest recursion allowed fits on a worker thread's stack in every scalar, even for
+/// paths that never escape (the eye inside a mirror sphere) traced in pairs; one more is a
+/// typed error, not a stack overflow.
+#[test]
+fn the_deepest_recursion_allowed_fits_on_the_stack() {
+    fn trapped<F: Float>() {
+        let mut scene = EnumScene::<F>::new(Background::default());
+        scene.add(
+            Sphere::new(Vec3::zero(), lit(10.0)).unwrap(),
+            Mirror::new(Vec3::splat(lit(0.99))).unwrap(),
+        );
+        let cam = ScreenCamera::new(4, 2).unwrap();
+        let deepest = RenderSettings::new(2, RenderSettings::MAX_DEPTH, 0).unwrap();
+        let r = in_pool(2, || render(&scene, &cam, &deepest).unwrap());
+        // Every camera ray bounces until the limit: 8 pixels × 2 samples × 1001 rays.
+        assert_eq!(r.stats.rays, 8 * 2 * u64::from(RenderSettings::MAX_DEPTH + 1));
+        let mut too_deep = deepest;
+        too_deep.max_depth += 1;
+        let err = render(&scene, &cam, &too_deep).unwrap_err().to_string();
+        assert!(err.contains("max depth"), "{err}");
+    }
+    trapped::<f32>();
+    trapped::<f64>();
+    trapped::<raytrace::DoubleDouble>();
+}

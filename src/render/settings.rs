@@ -9,7 +9,7 @@ pub struct RenderSettings {
     pub samples_per_pixel: u32,
     /// The most bounces a path may take: a ray that hits a surface after `max_depth`
     /// bounces returns black. `0` shows only what the camera rays see directly as black
-    /// silhouettes against the background.
+    /// silhouettes against the background. At most [`RenderSettings::MAX_DEPTH`].
     pub max_depth: u32,
     /// The seed every pixel's random stream derives from.
     pub seed: u64,
@@ -18,10 +18,17 @@ pub struct RenderSettings {
 }
 
 impl RenderSettings {
+    /// The deepest recursion accepted. The trace takes one stack frame per bounce (the
+    /// spec's recursive trace), and a path trapped between mirrors uses every one: 5000
+    /// bounces already fit in a 2 MiB thread stack (rayon's default) in `f64` and 7000
+    /// overflowed it, so 1000 leaves room for every scalar and for pairs of rays. No image
+    /// needs more: after 1000 bounces on albedo 0.99 a path carries 4·10⁻⁵ of its light.
+    pub const MAX_DEPTH: u32 = 1000;
+
     /// Settings with the given samples per pixel, depth and seed (no progress bar).
     ///
     /// # Errors
-    /// If `samples_per_pixel` is 0.
+    /// If `samples_per_pixel` is 0 or `max_depth` exceeds [`RenderSettings::MAX_DEPTH`].
     pub fn new(samples_per_pixel: u32, max_depth: u32, seed: u64) -> Result<Self> {
         let s = Self {
             samples_per_pixel,
@@ -39,6 +46,13 @@ impl RenderSettings {
             return Err(Error::InvalidSettings(
                 "samples per pixel must be at least 1, got 0".into(),
             ));
+        }
+        if self.max_depth > Self::MAX_DEPTH {
+            return Err(Error::InvalidSettings(format!(
+                "max depth must be at most {}, got {} (the recursion takes a stack frame per bounce)",
+                Self::MAX_DEPTH,
+                self.max_depth
+            )));
         }
         Ok(())
     }
