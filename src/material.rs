@@ -69,7 +69,7 @@ pub enum MaterialKind<F> {
 }
 
 impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
-    #[inline]
+    #[inline(always)]
     fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
         match self {
             Self::Mirror(m) => Material::<F, R>::scatter(m, ray, hit, rng),

@@ -336,16 +336,20 @@ fn a_pair_of_rays_traces_as_each_alone() {
 }
 
 /// Objects hit at exactly the same distance: the one added first wins, through the plain
-/// loop (spheres packed four at a time), the BVH, and the trait objects alike.
+/// loop (spheres packed four at a time, and with nine spheres the ninth tested alone), the
+/// BVH, and the trait objects alike.
 #[test]
 fn ties_go_to_the_object_added_first_on_every_path() {
     use raytrace::Acceleration;
     let ray = Ray::new(Vec3::zero(), Vec3::new(0.0, 0.0, -1.0));
-    for first in [0usize, 3, 5, 9] {
-        // Ten spheres; two of them, `first` and 9, are the same sphere in front.
+    for (n, first) in [9usize, 10]
+        .into_iter()
+        .flat_map(|n| [0, 3, 5, n - 1].map(|f| (n, f)))
+    {
+        // `n` spheres; two of them, `first` and the last, are the same sphere in front.
         let build = || {
-            (0..10).map(move |i| {
-                let c = if i == first || i == 9 {
+            (0..n).map(move |i| {
+                let c = if i == first || i == n - 1 {
                     Vec3::new(0.0, 0.0, -4.0)
                 } else {
                     Vec3::new(i as f64, 3.0, -4.0)
@@ -374,7 +378,7 @@ fn ties_go_to_the_object_added_first_on_every_path() {
             assert_eq!(
                 *material,
                 MaterialKind::from(want),
-                "{acceleration:?}, first {first}"
+                "{acceleration:?}, {n} spheres, first {first}"
             );
             let (dyn_hit, dyn_material) = dyn_scene.hit(&ray, f64::INFINITY).unwrap();
             assert_eq!(dyn_hit, hit);
@@ -387,7 +391,11 @@ fn ties_go_to_the_object_added_first_on_every_path() {
             );
             let mut rng = DefaultRng::seed_from_u64(0);
             let got = dyn_material.scatter(&ray, &probe, &mut rng).unwrap().attenuation;
-            assert_eq!(got, want.albedo(), "dyn {acceleration:?}, first {first}");
+            assert_eq!(
+                got,
+                want.albedo(),
+                "dyn {acceleration:?}, {n} spheres, first {first}"
+            );
         }
     }
 }

@@ -95,8 +95,9 @@ mod tests {
     use crate::vec3::Vec3;
     use rand::{RngExt, SeedableRng};
 
-    /// Every lane agrees bit for bit with the scalar sphere, for rays from outside, inside
-    /// and on spheres of very different sizes and distances.
+    /// Every lane, and [`Sphere::nearest_t`] for each sphere alone, agree bit for bit with
+    /// the scalar sphere's hit, for rays from outside, inside and on spheres of very
+    /// different sizes and distances.
     fn lanes_match_the_scalar_sphere<F: Float>() {
         let mut rng = rand::rngs::Xoshiro256PlusPlus::seed_from_u64(9);
         for _ in 0..2_000 {
@@ -126,6 +127,9 @@ mod tests {
             for (lane, s) in spheres.iter().enumerate() {
                 let want = s.hit(&ray, F::infinity()).map_or(F::infinity(), |h| h.t);
                 assert_eq!(got[lane].to_f64().to_bits(), want.to_f64().to_bits(), "{ray:?}");
+                // The test a scene runs on a sphere it packs alone gives the same `t`.
+                let alone = s.nearest_t(&ray).unwrap_or(F::infinity());
+                assert_eq!(alone.to_f64().to_bits(), want.to_f64().to_bits(), "{ray:?}");
             }
             for &t in &got[spheres.len()..] {
                 assert_eq!(t, F::infinity(), "empty lanes are never hit");
