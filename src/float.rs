@@ -98,14 +98,15 @@ impl Float for f32 {
     /// mispredict (this runs three times per spawned ray).
     #[inline]
     fn step_toward(self, s: Self) -> Self {
-        // In sign-magnitude bits, a step towards +∞ adds 1 to a positive value's bits and
-        // subtracts 1 from a negative one's; from ±0 it goes to the smallest value of the
-        // sign of `dir`.
-        let b = self.to_bits() as i32;
-        let dir = i32::from(s > 0.0) - i32::from(s < 0.0);
-        let stepped = b.wrapping_add(dir * (1 | (b >> 31)));
-        let from_zero = if dir == 0 { b } else { (dir & i32::MIN) | 1 };
-        let bits = if b & i32::MAX == 0 { from_zero } else { stepped };
+        // In sign-magnitude bits, a step towards `s` grows the magnitude (adds 1 to the
+        // bits) when `self` and `s` have the same sign and shrinks it (subtracts 1) when
+        // not; from ±0 it goes to the smallest value of `s`'s sign. (No multiplication:
+        // vectorised, a 32- or 64-bit integer product has no SSE2 instruction.)
+        let (b, sb) = (self.to_bits() as i32, s.to_bits() as i32);
+        let stepped = b.wrapping_add(((b ^ sb) >> 31) | 1);
+        let from_zero = (sb & i32::MIN) | 1;
+        let moved = if b & i32::MAX == 0 { from_zero } else { stepped };
+        let bits = if (s > 0.0) | (s < 0.0) { moved } else { b };
         if self.is_finite() {
             f32::from_bits(bits as u32)
         } else {
@@ -140,14 +141,15 @@ impl Float for f64 {
     /// mispredict (this runs three times per spawned ray).
     #[inline]
     fn step_toward(self, s: Self) -> Self {
-        // In sign-magnitude bits, a step towards +∞ adds 1 to a positive value's bits and
-        // subtracts 1 from a negative one's; from ±0 it goes to the smallest value of the
-        // sign of `dir`.
-        let b = self.to_bits() as i64;
-        let dir = i64::from(s > 0.0) - i64::from(s < 0.0);
-        let stepped = b.wrapping_add(dir * (1 | (b >> 63)));
-        let from_zero = if dir == 0 { b } else { (dir & i64::MIN) | 1 };
-        let bits = if b & i64::MAX == 0 { from_zero } else { stepped };
+        // In sign-magnitude bits, a step towards `s` grows the magnitude (adds 1 to the
+        // bits) when `self` and `s` have the same sign and shrinks it (subtracts 1) when
+        // not; from ±0 it goes to the smallest value of `s`'s sign. (No multiplication:
+        // vectorised, a 32- or 64-bit integer product has no SSE2 instruction.)
+        let (b, sb) = (self.to_bits() as i64, s.to_bits() as i64);
+        let stepped = b.wrapping_add(((b ^ sb) >> 63) | 1);
+        let from_zero = (sb & i64::MIN) | 1;
+        let moved = if b & i64::MAX == 0 { from_zero } else { stepped };
+        let bits = if (s > 0.0) | (s < 0.0) { moved } else { b };
         if self.is_finite() {
             f64::from_bits(bits as u64)
         } else {
@@ -266,7 +268,18 @@ mod tests {
             -2.5,
         ];
         for x in xs {
-            for s in [1.0f32, -1.0, 0.0, -0.0, f32::NAN] {
+            for s in [
+                1.0f32,
+                -1.0,
+                0.0,
+                -0.0,
+                f32::NAN,
+                -f32::NAN,
+                1e-40,
+                -3e30,
+                f32::INFINITY,
+                f32::NEG_INFINITY,
+            ] {
                 let want = |up: f32, down: f32| {
                     if s > 0.0 {
                         up
