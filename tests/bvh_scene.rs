@@ -5,8 +5,8 @@ use rand::{RngExt, SeedableRng};
 use raytrace::prelude::*;
 use raytrace::{Acceleration, DefaultRng};
 
-/// 300 random spheres and triangles around the origin, plus a ground plane (unbounded, so
-/// it stays outside the BVH).
+/// 300 random spheres and triangles around the origin, plus a ground plane (unbounded) and
+/// a huge sphere (its box covers most of the scene's), which both stay outside the BVH.
 fn scene<F: Float>(acceleration: Acceleration) -> EnumScene<F> {
     let mut rng = DefaultRng::seed_from_u64(17);
     let mut scene = EnumScene::new(Background::default());
@@ -33,6 +33,10 @@ fn scene<F: Float>(acceleration: Acceleration) -> EnumScene<F> {
     scene.add(
         Plane::new(Vec3::from_f64(0.0, -7.0, 0.0), Vec3::from_f64(0.0, 1.0, 0.0)).unwrap(),
         Lambertian::new(Vec3::splat(lit(0.5))).unwrap(),
+    );
+    scene.add(
+        Sphere::new(Vec3::from_f64(3.0, -106.5, -10.0), lit(100.0)).unwrap(),
+        Mirror::new(Vec3::splat(lit(0.6))).unwrap(),
     );
     scene.add_light(PointLight::new(Vec3::from_f64(0.0, 8.0, -8.0), Vec3::splat(lit(50.0))).unwrap());
     scene.set_acceleration(acceleration);

@@ -2,6 +2,7 @@
 //! the other shapes one by one, and a BVH over the groups once there are enough objects.
 
 use super::{Acceleration, Object};
+use crate::aabb::Aabb;
 use crate::bvh::Bvh;
 use crate::float::Float;
 use crate::ray::Ray;
@@ -27,7 +28,7 @@ struct Group {
 /// A scene's intersection structure, built from its objects on the first query.
 ///
 /// Group 0 holds every object tested by the plain loop: all of them, or with a BVH the
-/// unbounded ones (planes). With a BVH, group `k + 1` holds the objects of its leaf `k`.
+/// unbounded ones (planes) and the huge ones (see [`Index::build`]). With a BVH, group `k + 1` holds the objects of its leaf `k`.
 #[derive(Clone, Debug)]
 pub(super) struct Index<F> {
     packets: Vec<Packet<F>>,
@@ -102,18 +103,10 @@ impl<F: Float> Index<F> {
             groups: Vec::new(),
             bvh: None,
         };
-        let (mut bounded, mut boxes, mut unbounded) = (Vec::new(), Vec::new(), Vec::new());
-        for (i, o) in objects.iter().enumerate() {
-            match o.shape.bounds() {
-                Some(b) => {
-                    bounded.push(i as u32);
-                    boxes.push(b);
-                }
-                None => unbounded.push(i as u32),
-            }
-        }
+        let boxes: Vec<Option<Aabb<F>>> = objects.iter().map(|o| o.shape.bounds()).collect();
+        let bounded = boxes.iter().flatten().count();
         let wanted = match acceleration {
-            Acceleration::Auto => bounded.len() >= Acceleration::AUTO_THRESHOLD,
+            Acceleration::Auto => bounded >= Acceleration::AUTO_THRESHOLD,
             Acceleration::Linear => false,
             Acceleration::Bvh => true,
         };
@@ -121,7 +114,21 @@ impl<F: Float> Index<F> {
             index.push_group(0..objects.len() as u32, objects);
             return index;
         }
-        index.push_group(unbounded.into_iter(), objects);
+        // The loop keeps the unbounded objects (planes) and the huge ones: an object whose
+        // box covers half the scene's (by surface area: a ground sphere) is entered by
+        // nearly every ray that enters the tree, so the tree gains nothing on it, and its
+        // box would inflate every node above it. (`random_spheres`: 1176 → 1121
+        // instructions per ray, +2–3 % speed.)
+        let whole = boxes
+            .iter()
+            .flatten()
+            .fold(Aabb::empty(), |a, b| a.union(*b))
+            .surface_area();
+        let small = |b: &Aabb<F>| b.surface_area().to_f64() < 0.5 * whole.to_f64();
+        let in_tree = |i: u32| boxes[i as usize].filter(small).map(|b| (i, b));
+        let ids = 0..objects.len() as u32;
+        index.push_group(ids.clone().filter(|&i| in_tree(i).is_none()), objects);
+        let (bounded, boxes): (Vec<u32>, Vec<Aabb<F>>) = ids.filter_map(in_tree).unzip();
         let bvh = Bvh::build(&boxes);
         for k in 0..bvh.leaf_count() {
             index.push_group(bvh.leaf(k).iter().map(|&p| bounded[p as usize]), objects);
