@@ -94,8 +94,9 @@ pub(super) fn depth<F>(wide: &[Wide<F>], root: Option<Child>) -> usize {
 struct WideRay<F> {
     origin: [F4<F>; 3],
     inv_d: [F4<F>; 3],
+    /// `inv_d` grown for the far faces, as in [`crate::aabb::RayBoxTest`].
+    inv_far: [F4<F>; 3],
     neg: [bool; 3],
-    grow: F4<F>,
 }
 
 impl<F: Float> WideRay<F> {
@@ -105,8 +106,8 @@ impl<F: Float> WideRay<F> {
         Self {
             origin: [o.x, o.y, o.z].map(F4::splat),
             inv_d: inv.map(F4::splat),
+            inv_far: inv.map(|i| F4::splat(i * crate::aabb::far_growth())),
             neg: inv.map(|i| i < F::zero()),
-            grow: F4::splat(F::one() + F::gamma(3) * crate::float::lit(2.0)),
         }
     }
 
@@ -124,9 +125,9 @@ impl<F: Float> WideRay<F> {
             } else {
                 (n.lo[axis], n.hi[axis])
             };
-            let (o, inv) = (self.origin[axis], self.inv_d[axis]);
-            let t_near = (near - o) * inv;
-            let t_far = (far - o) * inv * self.grow;
+            let o = self.origin[axis];
+            let t_near = (near - o) * self.inv_d[axis];
+            let t_far = (far - o) * self.inv_far[axis];
             t0 = F4::select_lt(t0, t_near, t_near, t0);
             t1 = F4::select_lt(t_far, t1, t_far, t1);
         }
