@@ -28,7 +28,8 @@ struct Group {
 /// A scene's intersection structure, built from its objects on the first query.
 ///
 /// Group 0 holds every object tested by the plain loop: all of them, or with a BVH the
-/// unbounded ones (planes) and the huge ones (see [`Index::build`]). With a BVH, group `k + 1` holds the objects of its leaf `k`.
+/// unbounded ones (planes) and the huge ones (see [`Index::build`]). With a BVH, group
+/// `k + 1` holds the objects of its leaf `k`.
 #[derive(Clone, Debug)]
 pub(super) struct Index<F> {
     packets: Vec<Packet<F>>,

@@ -11,7 +11,8 @@ use crate::ray::Ray;
 /// in one SSE register, `f64` in two.
 ///
 /// A scene packs the spheres it knows to be spheres ([`Hittable::as_sphere`]) into these;
-/// the answer is bit for bit the one [`Sphere::hit`] gives for each sphere alone.
+/// the answer is bit for bit the one [`Sphere::hit`](super::Hittable::hit) gives for each
+/// sphere alone.
 ///
 /// [`Hittable::as_sphere`]: super::Hittable::as_sphere
 #[derive(Clone, Copy, Debug)]
@@ -40,8 +41,8 @@ impl<F: Float> Sphere4<F> {
         p
     }
 
-    /// For each lane, the `t` that [`Sphere::hit`] reports for that sphere with no bound
-    /// (`t_max = +∞`), or `+∞` where it reports none. (With a bound `t_max`, `Sphere::hit`
+    /// For each lane, the `t` that [`Sphere::hit`](super::Hittable::hit) reports for that
+    /// sphere with no bound (`t_max = +∞`), or `+∞` where it reports none. (With a bound `t_max`, `Sphere::hit`
     /// reports the same `t` if it is below `t_max`, else nothing.)
     ///
     /// The arithmetic is [`Sphere::roots`]' stable form, operation for operation
