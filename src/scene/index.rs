@@ -16,8 +16,19 @@ struct Packet<F> {
     ids: [u32; LANES],
 }
 
-/// Objects tested together: `packets[packets.0..packets.1]`, `singles[singles.0..singles.1]`,
-/// `others[others.0..others.1]`.
+/// Objects in the form they are tested in, one or more groups one after another.
+#[derive(Clone, Debug, Default)]
+struct Lists<F> {
+    packets: Vec<Packet<F>>,
+    /// Spheres left over after a group's packets of four, tested one by one, with their
+    /// object indices (see [`Lists::push_group`]).
+    singles: Vec<(Sphere<F>, u32)>,
+    /// Objects that are not (known to be) spheres, by object index.
+    others: Vec<u32>,
+}
+
+/// Where one group lies in its [`Lists`]: `packets[packets.0..packets.1]`,
+/// `singles[singles.0..singles.1]`, `others[others.0..others.1]`.
 #[derive(Clone, Copy, Debug)]
 struct Group {
     packets: (u32, u32),
@@ -25,21 +36,48 @@ struct Group {
     others: (u32, u32),
 }
 
+/// The objects of one group, borrowed from its [`Lists`].
+#[derive(Clone, Copy)]
+struct Members<'a, F> {
+    packets: &'a [Packet<F>],
+    singles: &'a [(Sphere<F>, u32)],
+    others: &'a [u32],
+}
+
 /// A scene's intersection structure, built from its objects on the first query.
 ///
-/// Group 0 holds every object tested by the plain loop: all of them, or with a BVH the
-/// unbounded ones (planes) and the huge ones (see [`Index::build`]). With a BVH, group
-/// `k + 1` holds the objects of its leaf `k`.
+/// The loop group holds every object tested by the plain loop: all of them, or with a BVH
+/// the unbounded ones (planes) and the huge ones (see [`Index::build`]). Every ray tests
+/// it, so it has lists of its own, read whole. With a BVH, `leaves[k]` holds the objects
+/// of its leaf `k`, in the shared lists `in_tree`.
 #[derive(Clone, Debug)]
 pub(super) struct Index<F> {
-    packets: Vec<Packet<F>>,
-    /// Spheres left over after a group's packets of four, tested one by one, with their
-    /// object indices (see [`Index::push_group`]).
-    singles: Vec<(Sphere<F>, u32)>,
-    /// Objects that are not (known to be) spheres, by object index.
-    others: Vec<u32>,
-    groups: Vec<Group>,
+    looped: Lists<F>,
+    in_tree: Lists<F>,
+    leaves: Vec<Group>,
     bvh: Option<Bvh<F>>,
+}
+
+impl<F> Lists<F> {
+    /// All the objects, as one group.
+    #[inline(always)]
+    fn all(&self) -> Members<'_, F> {
+        Members {
+            packets: &self.packets,
+            singles: &self.singles,
+            others: &self.others,
+        }
+    }
+
+    /// The objects of group `g`.
+    #[inline(always)]
+    fn group(&self, g: Group) -> Members<'_, F> {
+        Members {
+            packets: &self.packets[g.packets.0 as usize..g.packets.1 as usize],
+            singles: &self.singles[g.singles.0 as usize..g.singles.1 as usize],
+            others: &self.others[g.others.0 as usize..g.others.1 as usize],
+        }
+    }
 }
 
 /// The nearest hit found so far: `t` and the object `id`, the sphere's record still to
@@ -93,52 +131,13 @@ impl<F: Float> Nearest<F> {
     }
 }
 
-impl<F: Float> Index<F> {
-    /// Groups `objects` for `acceleration`.
-    pub(super) fn build<S: Hittable<F>, M>(objects: &[Object<S, M>], acceleration: Acceleration) -> Self {
-        let mut index = Self {
-            packets: Vec::new(),
-            singles: Vec::new(),
-            others: Vec::new(),
-            groups: Vec::new(),
-            bvh: None,
-        };
-        let boxes: Vec<Option<Aabb<F>>> = objects.iter().map(|o| o.shape.bounds()).collect();
-        let bounded = boxes.iter().flatten().count();
-        let wanted = match acceleration {
-            Acceleration::Auto => bounded >= Acceleration::AUTO_THRESHOLD,
-            Acceleration::Linear => false,
-            Acceleration::Bvh => true,
-        };
-        if !wanted {
-            index.push_group(0..objects.len() as u32, objects);
-            return index;
-        }
-        // The loop keeps the unbounded objects (planes) and the huge ones: an object whose
-        // box covers half the scene's (by surface area: a ground sphere) is entered by
-        // nearly every ray that enters the tree, so the tree gains nothing on it, and its
-        // box would inflate every node above it. (`random_spheres`: 1176 → 1121
-        // instructions per ray, +2–3 % speed.)
-        let whole = boxes
-            .iter()
-            .flatten()
-            .fold(Aabb::empty(), |a, b| a.union(*b))
-            .surface_area();
-        let small = |b: &Aabb<F>| b.surface_area().to_f64() < 0.5 * whole.to_f64();
-        let in_tree = |i: u32| boxes[i as usize].filter(small).map(|b| (i, b));
-        let ids = 0..objects.len() as u32;
-        index.push_group(ids.clone().filter(|&i| in_tree(i).is_none()), objects);
-        let (bounded, boxes): (Vec<u32>, Vec<Aabb<F>>) = ids.filter_map(in_tree).unzip();
-        let bvh = Bvh::build(&boxes);
-        for k in 0..bvh.leaf_count() {
-            index.push_group(bvh.leaf(k).iter().map(|&p| bounded[p as usize]), objects);
-        }
-        index.bvh = Some(bvh);
-        index
-    }
-
-    /// Appends a group of the objects `ids` (in increasing order).
-    fn push_group<S: Hittable<F>, M>(&mut self, ids: impl Iterator<Item = u32>, objects: &[Object<S, M>]) {
+impl<F: Float> Lists<F> {
+    /// Appends a group of the objects `ids` (in increasing order); where it lies.
+    fn push_group<S: Hittable<F>, M>(
+        &mut self,
+        ids: impl Iterator<Item = u32>,
+        objects: &[Object<S, M>],
+    ) -> Group {
         let first = (
             self.packets.len() as u32,
             self.singles.len() as u32,
@@ -175,11 +174,59 @@ impl<F: Float> Index<F> {
                 ids,
             });
         }
-        self.groups.push(Group {
+        Group {
             packets: (first.0, self.packets.len() as u32),
             singles: (first.1, self.singles.len() as u32),
             others: (first.2, self.others.len() as u32),
-        });
+        }
+    }
+}
+
+impl<F: Float> Index<F> {
+    /// Groups `objects` for `acceleration`.
+    pub(super) fn build<S: Hittable<F>, M>(objects: &[Object<S, M>], acceleration: Acceleration) -> Self {
+        let mut index = Self {
+            looped: Lists::default(),
+            in_tree: Lists::default(),
+            leaves: Vec::new(),
+            bvh: None,
+        };
+        let boxes: Vec<Option<Aabb<F>>> = objects.iter().map(|o| o.shape.bounds()).collect();
+        let bounded = boxes.iter().flatten().count();
+        let wanted = match acceleration {
+            Acceleration::Auto => bounded >= Acceleration::AUTO_THRESHOLD,
+            Acceleration::Linear => false,
+            Acceleration::Bvh => true,
+        };
+        if !wanted {
+            index.looped.push_group(0..objects.len() as u32, objects);
+            return index;
+        }
+        // The loop keeps the unbounded objects (planes) and the huge ones: an object whose
+        // box covers half the scene's (by surface area: a ground sphere) is entered by
+        // nearly every ray that enters the tree, so the tree gains nothing on it, and its
+        // box would inflate every node above it. (`random_spheres`: 1176 → 1121
+        // instructions per ray, +2–3 % speed.)
+        let whole = boxes
+            .iter()
+            .flatten()
+            .fold(Aabb::empty(), |a, b| a.union(*b))
+            .surface_area();
+        let small = |b: &Aabb<F>| b.surface_area().to_f64() < 0.5 * whole.to_f64();
+        let in_tree = |i: u32| boxes[i as usize].filter(small).map(|b| (i, b));
+        let ids = 0..objects.len() as u32;
+        index
+            .looped
+            .push_group(ids.clone().filter(|&i| in_tree(i).is_none()), objects);
+        let (bounded, boxes): (Vec<u32>, Vec<Aabb<F>>) = ids.filter_map(in_tree).unzip();
+        let bvh = Bvh::build(&boxes);
+        for k in 0..bvh.leaf_count() {
+            let leaf = bvh.leaf(k).iter().map(|&p| bounded[p as usize]);
+            let group = index.in_tree.push_group(leaf, objects);
+            index.leaves.push(group);
+        }
+        index.bvh = Some(bvh);
+        index
     }
 
     /// Whether a BVH is used.
@@ -197,10 +244,10 @@ impl<F: Float> Index<F> {
         t_max: F,
     ) -> Option<(Hit<F>, &'a Object<S, M>)> {
         let mut best = Nearest::new(t_max);
-        self.nearest_in(self.groups[0], objects, ray, &mut best);
+        Self::nearest_in(self.looped.all(), objects, ray, &mut best);
         if let Some(bvh) = &self.bvh {
             bvh.traverse(ray, best.t, |k, _| {
-                self.nearest_in(self.groups[k + 1], objects, ray, &mut best)
+                Self::nearest_in(self.in_tree.group(self.leaves[k]), objects, ray, &mut best)
                     .then_some(best.t)
             });
         }
@@ -221,14 +268,13 @@ impl<F: Float> Index<F> {
     /// Updates `best` with the objects of group `g`; whether it changed.
     #[inline(always)]
     fn nearest_in<S: Hittable<F>, M>(
-        &self,
-        g: Group,
+        g: Members<'_, F>,
         objects: &[Object<S, M>],
         ray: &Ray<F>,
         best: &mut Nearest<F>,
     ) -> bool {
         let mut changed = false;
-        for p in &self.packets[g.packets.0 as usize..g.packets.1 as usize] {
+        for p in g.packets {
             let t = p.spheres.hits(ray);
             let nearest = t.min_lane();
             // Most packets hold nothing nearer. Lanes follow the objects' order, so of
@@ -241,7 +287,7 @@ impl<F: Float> Index<F> {
                 }
             }
         }
-        for &(sphere, id) in &self.singles[g.singles.0 as usize..g.singles.1 as usize] {
+        for &(sphere, id) in g.singles {
             if let Some(t) = sphere.nearest_t(ray)
                 && best.beaten_by(t, id)
             {
@@ -249,7 +295,7 @@ impl<F: Float> Index<F> {
                 changed = true;
             }
         }
-        for &id in &self.others[g.others.0 as usize..g.others.1 as usize] {
+        for &id in g.others {
             if let Some(hit) = objects[id as usize].shape.hit(ray, best.bound_for(id))
                 && best.beaten_by(hit.t, id)
             {
@@ -268,21 +314,19 @@ impl<F: Float> Index<F> {
         ray: &Ray<F>,
         t_max: F,
     ) -> bool {
-        let blocks = |g: Group| {
-            self.packets[g.packets.0 as usize..g.packets.1 as usize]
-                .iter()
-                .any(|p| p.spheres.any(ray, t_max))
-                || self.singles[g.singles.0 as usize..g.singles.1 as usize]
+        let blocks = |g: Members<'_, F>| {
+            g.packets.iter().any(|p| p.spheres.any(ray, t_max))
+                || g.singles
                     .iter()
                     .any(|(s, _)| s.nearest_t(ray).is_some_and(|t| t < t_max))
-                || self.others[g.others.0 as usize..g.others.1 as usize]
+                || g.others
                     .iter()
                     .any(|&id| objects[id as usize].shape.occluded(ray, t_max))
         };
-        blocks(self.groups[0])
+        blocks(self.looped.all())
             || self
                 .bvh
                 .as_ref()
-                .is_some_and(|bvh| bvh.any(ray, t_max, |k| blocks(self.groups[k + 1])))
+                .is_some_and(|bvh| bvh.any(ray, t_max, |k| blocks(self.in_tree.group(self.leaves[k]))))
     }
 }
