@@ -68,6 +68,14 @@ impl<F: Float> F4<F> {
         if cd < ab { cd } else { ab }
     }
 
+    /// Bit `k` set where `test(k)` holds. One mask from a whole per-lane condition
+    /// compiles to one compare-and-mask sequence; or-ing masks made separately does not
+    /// (LLVM rebuilds each mask's bits one by one).
+    #[inline(always)]
+    pub fn mask_where(test: impl Fn(usize) -> bool) -> u32 {
+        u32::from(test(0)) | u32::from(test(1)) << 1 | u32::from(test(2)) << 2 | u32::from(test(3)) << 3
+    }
+
     /// Bit `k` set where lane `k` is `> bound`.
     #[inline(always)]
     pub fn mask_gt(self, bound: F) -> u32 {

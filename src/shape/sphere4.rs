@@ -67,8 +67,11 @@ impl<F: Float> Sphere4<F> {
         // outside (`c > 0`) and heads away (`b > 0`), so both roots are negative (in
         // floating point too: `q = −b − √Δ < 0` and `c/q < 0`). Then skip the square roots
         // and divisions. (Secondary rays leave a sphere whose line they always cross.)
-        let behind = c.mask_gt(F::zero()) & b.mask_gt(F::zero());
-        if disc.mask_lt(F::zero()) | behind == 0b1111 {
+        let miss = |k: usize| {
+            let o = F::zero();
+            (disc.0[k] < o) | ((c.0[k] > o) & (b.0[k] > o))
+        };
+        if F4::<F>::mask_where(miss) == 0b1111 {
             return inf;
         }
         let sqrt_d = disc.sqrt();
