@@ -5,10 +5,13 @@ use rand::{RngExt, SeedableRng};
 use raytrace::prelude::*;
 use raytrace::{Acceleration, DefaultRng};
 
-/// 300 random spheres and triangles around the origin, plus a ground plane (unbounded) and
-/// a huge sphere (its box covers most of the scene's), which both stay outside the BVH.
-fn scene<F: Float>(acceleration: Acceleration) -> EnumScene<F> {
+/// 300 random spheres of random sizes, or spheres and triangles, around the origin, plus a
+/// ground plane (unbounded) and a huge sphere (its box covers most of the scene's), which
+/// both stay outside the BVH. (With spheres alone every leaf of the tree is one packet;
+/// with triangles the leaves are general groups: both ways are tested.)
+fn scene<F: Float>(acceleration: Acceleration, triangles: bool) -> EnumScene<F> {
     let mut rng = DefaultRng::seed_from_u64(17);
+    let mut radii = DefaultRng::seed_from_u64(18);
     let mut scene = EnumScene::new(Background::default());
     let mut v = |s: f64| {
         Vec3::from_f64(
@@ -24,7 +27,10 @@ fn scene<F: Float>(acceleration: Acceleration) -> EnumScene<F> {
         } else {
             Lambertian::new(Vec3::from_f64(0.5, 0.6, 0.7)).unwrap().into()
         };
-        if i % 2 == 0 {
+        if !triangles {
+            let r = radii.random_range(0.05..0.8);
+            scene.add(Sphere::new(c, lit(r)).unwrap(), m);
+        } else if i % 2 == 0 {
             scene.add(Sphere::new(c, lit(0.4)).unwrap(), m);
         } else {
             scene.add(Triangle::new(c + v(0.7), c + v(0.7), c + v(0.7)).unwrap(), m);
@@ -43,9 +49,9 @@ fn scene<F: Float>(acceleration: Acceleration) -> EnumScene<F> {
     scene
 }
 
-fn same_queries<F: Float>() {
-    let linear = scene::<F>(Acceleration::Linear);
-    let bvh = scene::<F>(Acceleration::Bvh);
+fn same_queries<F: Float>(triangles: bool) {
+    let linear = scene::<F>(Acceleration::Linear, triangles);
+    let bvh = scene::<F>(Acceleration::Bvh, triangles);
     assert!(!linear.uses_bvh() && bvh.uses_bvh());
     let mut rng = DefaultRng::seed_from_u64(3);
     let mut hits = 0;
@@ -65,22 +71,26 @@ fn same_queries<F: Float>() {
 
 #[test]
 fn bvh_answers_like_the_loop_f32() {
-    same_queries::<f32>();
+    same_queries::<f32>(true);
+    same_queries::<f32>(false);
 }
 
 #[test]
 fn bvh_answers_like_the_loop_f64() {
-    same_queries::<f64>();
+    same_queries::<f64>(true);
+    same_queries::<f64>(false);
 }
 
 #[test]
 fn bvh_renders_the_same_bytes() {
     let cam = ScreenCamera::new(48, 24).unwrap();
     let s = RenderSettings::new(2, 6, 1).unwrap();
-    let a = render(&scene::<f32>(Acceleration::Linear), &cam, &s).unwrap();
-    let b = render(&scene::<f32>(Acceleration::Bvh), &cam, &s).unwrap();
-    assert_eq!(a.image, b.image);
-    assert_eq!(a.stats.rays, b.stats.rays);
+    for triangles in [true, false] {
+        let a = render(&scene::<f32>(Acceleration::Linear, triangles), &cam, &s).unwrap();
+        let b = render(&scene::<f32>(Acceleration::Bvh, triangles), &cam, &s).unwrap();
+        assert_eq!(a.image, b.image);
+        assert_eq!(a.stats.rays, b.stats.rays);
+    }
 }
 
 #[test]

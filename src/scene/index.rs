@@ -44,17 +44,27 @@ struct Members<'a, F> {
     others: &'a [u32],
 }
 
+/// Where the objects of each BVH leaf lie in [`Index::in_tree`].
+#[derive(Clone, Debug)]
+enum Leaves {
+    /// Every leaf holds up to four spheres and nothing else, so leaf `k` is exactly
+    /// packet `k`: a leaf's visit goes straight to its packet, with no group to look up.
+    Packets,
+    /// Leaf `k`'s objects are the group `groups[k]`.
+    Groups(Vec<Group>),
+}
+
 /// A scene's intersection structure, built from its objects on the first query.
 ///
 /// The loop group holds every object tested by the plain loop: all of them, or with a BVH
 /// the unbounded ones (planes) and the huge ones (see [`Index::build`]). Every ray tests
-/// it, so it has lists of its own, read whole. With a BVH, `leaves[k]` holds the objects
-/// of its leaf `k`, in the shared lists `in_tree`.
+/// it, so it has lists of its own, read whole. With a BVH, the objects of its leaves lie
+/// in the shared lists `in_tree`, as `leaves` says.
 #[derive(Clone, Debug)]
 pub(super) struct Index<F> {
     looped: Lists<F>,
     in_tree: Lists<F>,
-    leaves: Vec<Group>,
+    leaves: Leaves,
     bvh: Option<Bvh<F>>,
 }
 
@@ -66,6 +76,16 @@ impl<F> Lists<F> {
             packets: &self.packets,
             singles: &self.singles,
             others: &self.others,
+        }
+    }
+
+    /// Packet `k` alone, as a group.
+    #[inline(always)]
+    fn packet(&self, k: usize) -> Members<'_, F> {
+        Members {
+            packets: std::slice::from_ref(&self.packets[k]),
+            singles: &[],
+            others: &[],
         }
     }
 
@@ -132,11 +152,21 @@ impl<F: Float> Nearest<F> {
 }
 
 impl<F: Float> Lists<F> {
-    /// Appends a group of the objects `ids` (in increasing order); where it lies.
+    /// How many spheres left over after a group's packets of four are tested one by one
+    /// rather than in a packet with empty lanes: one in f32, where four lanes fill one SSE
+    /// register; up to two in wider scalars, where a packet takes two or more. (Callgrind,
+    /// one thread: `four_mirrors`' floor alone 490 → 471 instructions per ray in f32;
+    /// `matte_spheres`' two leftovers alone 390 → 355 M instructions in f64, but
+    /// 299 → 310 M in f32.)
+    const ALONE: usize = if std::mem::size_of::<F>() <= 4 { 1 } else { 2 };
+
+    /// Appends a group of the objects `ids` (in increasing order), testing up to `alone`
+    /// leftover spheres one by one; where it lies.
     fn push_group<S: Hittable<F>, M>(
         &mut self,
         ids: impl Iterator<Item = u32>,
         objects: &[Object<S, M>],
+        alone: usize,
     ) -> Group {
         let first = (
             self.packets.len() as u32,
@@ -150,13 +180,6 @@ impl<F: Float> Lists<F> {
                 None => self.others.push(id),
             }
         }
-        // The leftover after the packets of four is tested sphere by sphere when that is
-        // cheaper than a packet with empty lanes: one sphere in f32, where four lanes fill
-        // one SSE register; up to two in wider scalars, where a packet takes two or more.
-        // (Callgrind, one thread: `four_mirrors`' floor alone 490 → 471 instructions per
-        // ray in f32; `matte_spheres`' two leftovers alone 390 → 355 M instructions in
-        // f64, but 299 → 310 M in f32.)
-        let alone = if std::mem::size_of::<F>() <= 4 { 1 } else { 2 };
         let left = spheres.len() % LANES;
         if left <= alone {
             for (id, s) in spheres.drain(spheres.len() - left..) {
@@ -188,7 +211,7 @@ impl<F: Float> Index<F> {
         let mut index = Self {
             looped: Lists::default(),
             in_tree: Lists::default(),
-            leaves: Vec::new(),
+            leaves: Leaves::Packets,
             bvh: None,
         };
         let boxes: Vec<Option<Aabb<F>>> = objects.iter().map(|o| o.shape.bounds()).collect();
@@ -199,7 +222,9 @@ impl<F: Float> Index<F> {
             Acceleration::Bvh => true,
         };
         if !wanted {
-            index.looped.push_group(0..objects.len() as u32, objects);
+            index
+                .looped
+                .push_group(0..objects.len() as u32, objects, Lists::<F>::ALONE);
             return index;
         }
         // The loop keeps the unbounded objects (planes) and the huge ones: an object whose
@@ -215,15 +240,26 @@ impl<F: Float> Index<F> {
         let small = |b: &Aabb<F>| b.surface_area().to_f64() < 0.5 * whole.to_f64();
         let in_tree = |i: u32| boxes[i as usize].filter(small).map(|b| (i, b));
         let ids = 0..objects.len() as u32;
-        index
-            .looped
-            .push_group(ids.clone().filter(|&i| in_tree(i).is_none()), objects);
+        index.looped.push_group(
+            ids.clone().filter(|&i| in_tree(i).is_none()),
+            objects,
+            Lists::<F>::ALONE,
+        );
         let (bounded, boxes): (Vec<u32>, Vec<Aabb<F>>) = ids.filter_map(in_tree).unzip();
         let bvh = Bvh::build(&boxes);
-        for k in 0..bvh.leaf_count() {
-            let leaf = bvh.leaf(k).iter().map(|&p| bounded[p as usize]);
-            let group = index.in_tree.push_group(leaf, objects);
-            index.leaves.push(group);
+        let leaf = |k: usize| bvh.leaf(k).iter().map(|&p| bounded[p as usize]);
+        // Leaves of up to four spheres (all of them, in a scene of spheres) become one
+        // packet each, a lone sphere included: no group to look up on each visit outweighs
+        // the empty lanes. (`random_spheres`, callgrind, f32: see the commit.)
+        let one_packet = (0..bvh.leaf_count()).all(|k| {
+            bvh.leaf(k).len() <= LANES && leaf(k).all(|i| objects[i as usize].shape.as_sphere().is_some())
+        });
+        let alone = if one_packet { 0 } else { Lists::<F>::ALONE };
+        let groups = (0..bvh.leaf_count())
+            .map(|k| index.in_tree.push_group(leaf(k), objects, alone))
+            .collect();
+        if !one_packet {
+            index.leaves = Leaves::Groups(groups);
         }
         index.bvh = Some(bvh);
         index
@@ -246,10 +282,14 @@ impl<F: Float> Index<F> {
         let mut best = Nearest::new(t_max);
         Self::nearest_in(self.looped.all(), objects, ray, &mut best);
         if let Some(bvh) = &self.bvh {
-            bvh.traverse(ray, best.t, |k, _| {
-                Self::nearest_in(self.in_tree.group(self.leaves[k]), objects, ray, &mut best)
-                    .then_some(best.t)
-            });
+            match &self.leaves {
+                Leaves::Packets => bvh.traverse(ray, best.t, |k, _| {
+                    Self::nearest_in(self.in_tree.packet(k), objects, ray, &mut best).then_some(best.t)
+                }),
+                Leaves::Groups(groups) => bvh.traverse(ray, best.t, |k, _| {
+                    Self::nearest_in(self.in_tree.group(groups[k]), objects, ray, &mut best).then_some(best.t)
+                }),
+            }
         }
         let object = objects.get(best.id as usize)?;
         let hit = match best.found {
@@ -324,9 +364,55 @@ impl<F: Float> Index<F> {
                     .any(|&id| objects[id as usize].shape.occluded(ray, t_max))
         };
         blocks(self.looped.all())
-            || self
-                .bvh
-                .as_ref()
-                .is_some_and(|bvh| bvh.any(ray, t_max, |k| blocks(self.in_tree.group(self.leaves[k]))))
+            || self.bvh.as_ref().is_some_and(|bvh| {
+                bvh.any(ray, t_max, |k| match &self.leaves {
+                    Leaves::Packets => blocks(self.in_tree.packet(k)),
+                    Leaves::Groups(groups) => blocks(self.in_tree.group(groups[k])),
+                })
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::{ShapeKind, Triangle};
+    use crate::vec3::Vec3;
+
+    /// `n` unit-spaced small spheres in a row, and a triangle after them if asked.
+    fn objects(n: usize, triangle: bool) -> Vec<Object<ShapeKind<f32>, ()>> {
+        let mut objects: Vec<_> = (0..n)
+            .map(|i| Object {
+                shape: Sphere::new(Vec3::new(i as f32, 0.0, -5.0), 0.3).unwrap().into(),
+                material: (),
+            })
+            .collect();
+        if triangle {
+            let v = |x: f32, y: f32| Vec3::new(x, y, -6.0);
+            objects.push(Object {
+                shape: Triangle::new(v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0))
+                    .unwrap()
+                    .into(),
+                material: (),
+            });
+        }
+        objects
+    }
+
+    /// With spheres alone each leaf is one packet, lone spheres included (no singles in the
+    /// tree); with another shape in the tree the leaves are groups.
+    #[test]
+    fn leaves_are_packets_only_when_the_tree_holds_spheres_alone() {
+        let index = Index::build(&objects(37, false), Acceleration::Bvh);
+        let bvh = index.bvh.as_ref().unwrap();
+        assert!(matches!(index.leaves, Leaves::Packets));
+        assert_eq!(index.in_tree.packets.len(), bvh.leaf_count());
+        assert!(index.in_tree.singles.is_empty() && index.in_tree.others.is_empty());
+        let index = Index::build(&objects(37, true), Acceleration::Bvh);
+        let Leaves::Groups(groups) = &index.leaves else {
+            panic!("a triangle in the tree needs groups");
+        };
+        assert_eq!(groups.len(), index.bvh.as_ref().unwrap().leaf_count());
+        assert_eq!(index.in_tree.others.len(), 1);
     }
 }
