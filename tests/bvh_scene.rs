@@ -105,3 +105,49 @@ fn auto_uses_a_bvh_only_from_the_threshold() {
     }
     assert!(small.uses_bvh());
 }
+
+/// Objects hit at exactly the same distance inside one BVH leaf: the object added first
+/// wins through the tree as through the loop. Each of 150 random spheres is added twice,
+/// the copies after all the originals, so every pair shares a box and a leaf, in whatever
+/// order the build's partitions leave them; every albedo is distinct, so the material
+/// names the object that won.
+#[test]
+fn ties_inside_a_leaf_go_to_the_object_added_first() {
+    fn check<F: Float>() {
+        let mut rng = DefaultRng::seed_from_u64(29);
+        let spheres: Vec<(Vec3<F>, F)> = (0..150)
+            .map(|_| {
+                let c = Vec3::from_f64(
+                    rng.random_range(-6.0..6.0),
+                    rng.random_range(-6.0..6.0),
+                    rng.random_range(-16.0..-4.0),
+                );
+                (c, lit(rng.random_range(0.1..0.6)))
+            })
+            .collect();
+        let build = |acceleration| {
+            let mut scene = EnumScene::<F>::new(Background::default());
+            for copy in 0..2 {
+                for (i, &(c, r)) in spheres.iter().enumerate() {
+                    let albedo = Vec3::from_f64((2 * i + copy) as f64 / 400.0, 0.5, 0.5);
+                    scene.add(Sphere::new(c, r).unwrap(), Lambertian::new(albedo).unwrap());
+                }
+            }
+            scene.set_acceleration(acceleration);
+            scene
+        };
+        let (linear, bvh) = (build(Acceleration::Linear), build(Acceleration::Bvh));
+        assert!(bvh.uses_bvh());
+        let mut hits = 0;
+        for &(c, _) in &spheres {
+            let o = Vec3::from_f64(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), 0.0);
+            let ray = Ray::towards(o, c).unwrap();
+            let (a, b) = (linear.hit(&ray, F::infinity()), bvh.hit(&ray, F::infinity()));
+            assert_eq!(a.map(|(h, m)| (h, *m)), b.map(|(h, m)| (h, *m)), "{ray:?}");
+            hits += usize::from(a.is_some());
+        }
+        assert_eq!(hits, spheres.len(), "every ray aims at a sphere's centre");
+    }
+    check::<f32>();
+    check::<f64>();
+}
