@@ -76,13 +76,6 @@ impl<F: Float> F4<F> {
         u32::from(test(0)) | u32::from(test(1)) << 1 | u32::from(test(2)) << 2 | u32::from(test(3)) << 3
     }
 
-    /// Bit `k` set where lane `k` is `> bound`.
-    #[inline(always)]
-    pub fn mask_gt(self, bound: F) -> u32 {
-        let [a, b, c, d] = self.0.map(|x| u32::from(x > bound));
-        a | (b << 1) | (c << 2) | (d << 3)
-    }
-
     /// Bit `k` set where lane `k` is `== v`.
     #[inline(always)]
     pub fn mask_eq(self, v: F) -> u32 {
@@ -160,6 +153,7 @@ mod tests {
         let s = F4::select_lt(a, b, F4::splat(1.0), F4::splat(0.0));
         assert_eq!(s.0, [1.0, 1.0, 0.0, 0.0], "NaN < 2 is false");
         assert_eq!(a.mask_lt(2.0), 0b0011);
+        assert_eq!(F4::<f32>::mask_where(|k| a.0[k] > 0.0 || a.0[k].is_nan()), 0b1101);
         assert_eq!(a.min_lane(), -2.0);
         assert_eq!(F4([5.0f64, 3.0, 4.0, 3.0]).min_lane(), 3.0);
         assert!(F4([-1.0f64, 4.0, 0.0, 9.0]).sqrt().0[0].is_nan());

@@ -265,7 +265,13 @@ impl<F: Float> Index<F> {
         let groups = (0..bvh.leaf_count())
             .map(|k| index.in_tree.push_group(leaf(k), objects, alone))
             .collect();
-        if !one_packet {
+        if one_packet {
+            debug_assert_eq!(
+                index.in_tree.packets.len(),
+                bvh.leaf_count(),
+                "leaf k is packet k"
+            );
+        } else {
             index.leaves = Leaves::Groups(groups);
         }
         index.bvh = Some(bvh);
@@ -371,11 +377,9 @@ impl<F: Float> Index<F> {
                     .any(|&id| objects[id as usize].shape.occluded(ray, t_max))
         };
         blocks(self.looped.all())
-            || self.bvh.as_ref().is_some_and(|bvh| {
-                bvh.any(ray, t_max, |k| match &self.leaves {
-                    Leaves::Packets => blocks(self.in_tree.packet(k)),
-                    Leaves::Groups(groups) => blocks(self.in_tree.group(groups[k])),
-                })
+            || self.bvh.as_ref().is_some_and(|bvh| match &self.leaves {
+                Leaves::Packets => bvh.any(ray, t_max, |k| blocks(self.in_tree.packet(k))),
+                Leaves::Groups(groups) => bvh.any(ray, t_max, |k| blocks(self.in_tree.group(groups[k]))),
             })
     }
 }
