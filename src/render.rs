@@ -4,6 +4,7 @@
 mod seed;
 mod settings;
 mod trace;
+mod wavefront;
 
 pub use seed::pixel_seed;
 pub use settings::{Rect, RenderSettings};
@@ -11,12 +12,11 @@ pub use trace::Tracer;
 
 use crate::camera::Camera;
 use crate::error::Result;
-use crate::float::{Float, lit};
+use crate::float::Float;
 use crate::image::Image;
 use crate::material::Material;
 use crate::scene::Scene;
 use crate::shape::Hittable;
-use crate::vec3::Color;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rand::{Rng, SeedableRng};
 use rayon::prelude::*;
@@ -133,15 +133,18 @@ where
         .pixels_mut()
         .par_chunks_mut(tile.width)
         .enumerate()
-        .map(|(row, pixels)| {
+        .map_init(wavefront::Row::new, |paths, (row, pixels)| {
             let y = tile.y + row;
             let mut tracer = Tracer::new(scene, settings.max_depth);
-            for (col, out) in pixels.iter_mut().enumerate() {
-                let x = tile.x + col;
-                let index = (y * camera.width() + x) as u64;
-                let mut rng = R::seed_from_u64(pixel_seed(settings.seed, index));
-                *out = sample_pixel(&mut tracer, camera, x, y, settings.samples_per_pixel, &mut rng).to_f64();
-            }
+            let rng = |x: usize| R::seed_from_u64(pixel_seed(settings.seed, (y * camera.width() + x) as u64));
+            paths.render(
+                &mut tracer,
+                camera,
+                (tile.x, y),
+                settings.samples_per_pixel,
+                rng,
+                pixels,
+            );
             progress.inc(1);
             tracer.rays()
         })
@@ -155,46 +158,6 @@ where
             threads: rayon::current_num_threads(),
         },
     })
-}
-
-/// The mean colour of `spp` samples of pixel `(x, y)`.
-#[inline]
-fn sample_pixel<R, F, S, M, C>(
-    tracer: &mut Tracer<'_, F, S, M>,
-    camera: &C,
-    x: usize,
-    y: usize,
-    spp: u32,
-    rng: &mut R,
-) -> Color<F>
-where
-    R: Rng + ?Sized,
-    F: Float,
-    S: Hittable<F>,
-    M: Material<F, R>,
-    C: Camera<F>,
-{
-    let (px, py) = (lit::<F>(x as f64), lit::<F>(y as f64));
-    if spp == 1 {
-        return tracer.trace(&camera.ray(px, py), 0, rng);
-    }
-    let jittered = |rng: &mut R| {
-        let (dx, dy) = crate::sampling::pixel_jitter(rng);
-        camera.ray(px + lit(dx), py + lit(dy))
-    };
-    let mut sum = Color::zero();
-    // Samples in pairs, traced side by side (the second's jitter drawn before the first's path).
-    for _ in 0..spp / 2 {
-        let (a, b) = (jittered(rng), jittered(rng));
-        let (ca, cb) = tracer.trace_pair(&a, &b, 0, rng);
-        sum = sum + ca + cb;
-    }
-    if spp % 2 == 1 {
-        let ray = jittered(rng);
-        sum = sum + tracer.trace(&ray, 0, rng);
-    }
-    // Each sample is finite, but their sum may overflow: cap the mean again.
-    trace::saturate(sum / lit(f64::from(spp)))
 }
 
 /// A progress bar on stderr (work done, rate, time left), hidden unless asked for and

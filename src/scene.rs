@@ -9,6 +9,7 @@ use crate::material::{Material, MaterialKind};
 use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, ShapeKind};
 use index::Index;
+pub(crate) use index::Nearests;
 use std::marker::PhantomData;
 use std::sync::{Arc, OnceLock};
 
@@ -148,6 +149,18 @@ impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &M)> {
         let (hit, object) = self.index().hit(&self.objects, ray, t_max)?;
         Some((hit, &object.material))
+    }
+
+    /// [`Scene::hit`] with no bound for each of `rays`, into `out` (cleared first): the
+    /// same answers, found for the whole batch at once (`near` is scratch space).
+    #[inline]
+    pub(crate) fn hit_all<'s>(
+        &'s self,
+        rays: &[Ray<F>],
+        near: &mut Nearests<F>,
+        out: &mut Vec<Option<(Hit<F>, &'s M)>>,
+    ) {
+        self.index().hit_all(&self.objects, rays, near, out);
     }
 
     /// Whether any object blocks the ray in `(0, t_max)`; stops at the first.

@@ -20,16 +20,16 @@ pub(crate) fn saturate<F: Float>(c: Color<F>) -> Color<F> {
 
 /// One bounce's outcome: the ray's colour, or the next ray with the direct light and the
 /// attenuation that combine with the colour it brings back.
-enum Step<F> {
+pub(super) enum Step<F> {
     Done(Color<F>),
     Go(Ray<F>, Color<F>, Color<F>),
 }
 
 /// Traces rays through one scene and counts them.
 pub struct Tracer<'a, F, S, M> {
-    scene: &'a Scene<F, S, M>,
+    pub(super) scene: &'a Scene<F, S, M>,
     max_depth: u32,
-    rays: u64,
+    pub(super) rays: u64,
 }
 
 impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
@@ -100,7 +100,13 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
     /// What a ray's hit (or miss) does: a final colour, or the ray to trace next with the
     /// direct light and attenuation to combine with what it brings back.
     #[inline(always)]
-    fn shade<R>(&mut self, ray: &Ray<F>, hit: Option<(Hit<F>, &M)>, depth: u32, rng: &mut R) -> Step<F>
+    pub(super) fn shade<R>(
+        &mut self,
+        ray: &Ray<F>,
+        hit: Option<(Hit<F>, &M)>,
+        depth: u32,
+        rng: &mut R,
+    ) -> Step<F>
     where
         R: Rng + ?Sized,
         M: Material<F, R>,

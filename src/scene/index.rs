@@ -27,6 +27,48 @@ struct Lists<F> {
     others: Vec<u32>,
 }
 
+/// No object: the `id` of a ray that has hit nothing yet.
+const NONE: u32 = u32::MAX;
+
+/// Each ray's nearest hit so far in a batch ([`Index::hit_all`]): `t`, the object `id`
+/// (or [`NONE`]), and the record if it is not a sphere's; kept from batch to batch.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Nearests<F> {
+    t: Vec<F>,
+    id: Vec<u32>,
+    other: Vec<Option<Hit<F>>>,
+}
+
+impl<F: Float> Nearests<F> {
+    /// Nothing found yet for `n` rays; records are kept only if `others`.
+    fn reset(&mut self, n: usize, others: bool) {
+        self.t.clear();
+        self.t.resize(n, F::infinity());
+        self.id.clear();
+        self.id.resize(n, NONE);
+        self.other.clear();
+        if others {
+            self.other.resize(n, None);
+        }
+    }
+
+    /// Ray `i`'s nearest hit so far, as [`Nearest`]: the record of another shape is
+    /// handed over.
+    fn take(&mut self, i: usize) -> Nearest<F> {
+        let (t, id) = (self.t[i], self.id[i]);
+        let found = match self.other.get_mut(i).and_then(Option::take) {
+            Some(hit) => Found::Other(hit),
+            None if id == NONE => Found::Nothing,
+            None => Found::Sphere,
+        };
+        Nearest {
+            t,
+            id: if id == NONE { 0 } else { id },
+            found,
+        }
+    }
+}
+
 /// Where one group lies in its [`Lists`]: `packets[packets.0..packets.1]`,
 /// `singles[singles.0..singles.1]`, `others[others.0..others.1]`.
 #[derive(Clone, Copy, Debug)]
@@ -304,6 +346,85 @@ impl<F: Float> Index<F> {
                 }),
             }
         }
+        Self::record(objects, ray, best)
+    }
+
+    /// [`Index::hit`] with no bound for each of `rays`, into `out`, `near` holding each
+    /// ray's nearest `t` and object so far: the loop group's objects are tested one object
+    /// over all the rays at a time (independent iterations the processor overlaps, where
+    /// one ray's tests would wait on each other), then each ray searches the BVH.
+    #[inline]
+    pub(super) fn hit_all<'a, S: Hittable<F>, M>(
+        &self,
+        objects: &'a [Object<S, M>],
+        rays: &[Ray<F>],
+        near: &mut Nearests<F>,
+        out: &mut Vec<Option<(Hit<F>, &'a M)>>,
+    ) {
+        let g = self.looped.all();
+        near.reset(rays.len(), !g.others.is_empty());
+        let (ts, ids) = (&mut near.t, &mut near.id);
+        for p in g.packets {
+            for ((ray, t), id) in rays.iter().zip(ts.iter_mut()).zip(ids.iter_mut()) {
+                let hits = p.spheres.hits(ray);
+                let nearest = hits.min_lane();
+                if nearest < F::infinity() && nearest <= *t {
+                    let lane = p.ids[hits.mask_eq(nearest).trailing_zeros() as usize];
+                    if nearest < *t || lane < *id {
+                        (*t, *id) = (nearest, lane);
+                    }
+                }
+            }
+        }
+        for &(sphere, lane) in g.singles {
+            for ((ray, t), id) in rays.iter().zip(ts.iter_mut()).zip(ids.iter_mut()) {
+                if let Some(s) = sphere.nearest_t(ray)
+                    && (s < *t || (s == *t && lane < *id))
+                {
+                    (*t, *id) = (s, lane);
+                }
+            }
+        }
+        for &other in g.others {
+            let rays = rays.iter().zip(ts.iter_mut()).zip(ids.iter_mut());
+            for (((ray, t), id), record) in rays.zip(near.other.iter_mut()) {
+                let bound = if *id != NONE && other < *id {
+                    t.next_up()
+                } else {
+                    *t
+                };
+                if let Some(hit) = objects[other as usize].shape.hit(ray, bound)
+                    && (hit.t < *t || (hit.t == *t && other < *id))
+                {
+                    (*t, *id, *record) = (hit.t, other, Some(hit));
+                }
+            }
+        }
+        out.clear();
+        for (i, ray) in rays.iter().enumerate() {
+            let mut best = near.take(i);
+            if let Some(bvh) = &self.bvh {
+                match &self.leaves {
+                    Leaves::Packets => bvh.traverse(ray, best.t, |k, _| {
+                        Self::nearest_in(self.in_tree.packet(k), objects, ray, &mut best).then_some(best.t)
+                    }),
+                    Leaves::Groups(groups) => bvh.traverse(ray, best.t, |k, _| {
+                        Self::nearest_in(self.in_tree.group(groups[k]), objects, ray, &mut best)
+                            .then_some(best.t)
+                    }),
+                }
+            }
+            out.push(Self::record(objects, ray, best).map(|(hit, object)| (hit, &object.material)));
+        }
+    }
+
+    /// The record of the nearest hit `best` found for `ray`, and the object hit.
+    #[inline(always)]
+    fn record<'a, S: Hittable<F>, M>(
+        objects: &'a [Object<S, M>],
+        ray: &Ray<F>,
+        best: Nearest<F>,
+    ) -> Option<(Hit<F>, &'a Object<S, M>)> {
         let object = objects.get(best.id as usize)?;
         let hit = match best.found {
             Found::Nothing => return None,
@@ -318,6 +439,23 @@ impl<F: Float> Index<F> {
         Some((hit, object))
     }
 
+    /// Updates `best` with packet `p`; whether it changed.
+    #[inline(always)]
+    fn nearest_in_packet(p: &Packet<F>, ray: &Ray<F>, best: &mut Nearest<F>) -> bool {
+        let t = p.spheres.hits(ray);
+        let nearest = t.min_lane();
+        // Most packets hold nothing nearer. Lanes follow the objects' order, so of
+        // equally near lanes the first is the packet's answer.
+        if nearest < F::infinity() && nearest <= best.t {
+            let id = p.ids[t.mask_eq(nearest).trailing_zeros() as usize];
+            if best.beaten_by(nearest, id) {
+                (best.t, best.id, best.found) = (nearest, id, Found::Sphere);
+                return true;
+            }
+        }
+        false
+    }
+
     /// Updates `best` with the objects of group `g`; whether it changed.
     #[inline(always)]
     fn nearest_in<S: Hittable<F>, M>(
@@ -328,17 +466,7 @@ impl<F: Float> Index<F> {
     ) -> bool {
         let mut changed = false;
         for p in g.packets {
-            let t = p.spheres.hits(ray);
-            let nearest = t.min_lane();
-            // Most packets hold nothing nearer. Lanes follow the objects' order, so of
-            // equally near lanes the first is the packet's answer.
-            if nearest < F::infinity() && nearest <= best.t {
-                let id = p.ids[t.mask_eq(nearest).trailing_zeros() as usize];
-                if best.beaten_by(nearest, id) {
-                    (best.t, best.id, best.found) = (nearest, id, Found::Sphere);
-                    changed = true;
-                }
-            }
+            changed |= Self::nearest_in_packet(p, ray, best);
         }
         for &(sphere, id) in g.singles {
             if let Some(t) = sphere.nearest_t(ray)
@@ -425,5 +553,93 @@ mod tests {
         };
         assert_eq!(groups.len(), index.bvh.as_ref().unwrap().leaf_count());
         assert_eq!(index.in_tree.others.len(), 1);
+    }
+
+    /// Spheres of random sizes (each added twice, so that exact ties happen), triangles and
+    /// a plane, through the plain loop and through a BVH.
+    fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, u32>> {
+        use crate::shape::Plane;
+        use rand::{RngExt, SeedableRng};
+        let mut rng = crate::render::DefaultRng::seed_from_u64(seed);
+        let mut v = |s: f64| {
+            Vec3::new(
+                rng.random_range(-s..s),
+                rng.random_range(-s..s),
+                rng.random_range(-s..s),
+            )
+        };
+        let mut shapes: Vec<ShapeKind<f64>> = Vec::new();
+        for i in 0..120 {
+            let c = v(5.0);
+            if triangles && i % 3 == 0 {
+                shapes.push(Triangle::new(c + v(0.8), c + v(0.8), c + v(0.8)).unwrap().into());
+            } else {
+                let s: ShapeKind<f64> = Sphere::new(c, 0.05 + v(0.4).x.abs()).unwrap().into();
+                shapes.push(s);
+                shapes.push(s);
+            }
+        }
+        shapes.push(
+            Plane::new(Vec3::new(0.0, -6.0, 0.0), Vec3::new(0.0, 1.0, 0.0))
+                .unwrap()
+                .into(),
+        );
+        shapes.push(Sphere::new(Vec3::new(0.0, -1005.0, 0.0), 1000.0).unwrap().into());
+        shapes
+            .into_iter()
+            .enumerate()
+            .map(|(i, shape)| Object {
+                shape,
+                material: i as u32,
+            })
+            .collect()
+    }
+
+    /// The batch answers exactly as one ray at a time: the same record and object, for
+    /// rays from outside, from inside and from the surfaces, ties included. (It finds a
+    /// mismatch if a batch loop skips an object, tests a packet with the wrong ray, or
+    /// breaks ties the other way.)
+    #[test]
+    fn a_batch_answers_like_single_rays() {
+        use rand::{RngExt, SeedableRng};
+        for (seed, triangles, acceleration) in [
+            (1, false, Acceleration::Linear),
+            (2, true, Acceleration::Linear),
+            (3, false, Acceleration::Bvh),
+            (4, true, Acceleration::Bvh),
+        ] {
+            let objects = mixed(seed, triangles);
+            let index = Index::build(&objects, acceleration);
+            let mut rng = crate::render::DefaultRng::seed_from_u64(seed + 10);
+            let mut v = |s: f64| {
+                Vec3::new(
+                    rng.random_range(-s..s),
+                    rng.random_range(-s..s),
+                    rng.random_range(-s..s),
+                )
+            };
+            let mut rays: Vec<Ray<f64>> = (0..3000).filter_map(|_| Ray::towards(v(9.0), v(5.0))).collect();
+            // Rays leaving the surfaces the first rays hit, as secondary rays do.
+            let firsts: Vec<_> = rays
+                .iter()
+                .filter_map(|r| index.hit(&objects, r, f64::INFINITY))
+                .collect();
+            rays.extend(firsts.iter().filter_map(|(h, _)| {
+                let d = (h.normal + v(1.0)).try_normalize()?;
+                Some(h.spawn(d))
+            }));
+            let (mut near, mut out) = (Nearests::default(), Vec::new());
+            index.hit_all(&objects, &rays, &mut near, &mut out);
+            assert_eq!(out.len(), rays.len());
+            let mut hits = 0;
+            for (ray, got) in rays.iter().zip(&out) {
+                let want = index
+                    .hit(&objects, ray, f64::INFINITY)
+                    .map(|(h, o)| (h, o.material));
+                assert_eq!(got.map(|(h, &m)| (h, m)), want, "{ray:?}");
+                hits += usize::from(want.is_some());
+            }
+            assert!(hits > rays.len() / 2, "most rays should hit something ({hits})");
+        }
     }
 }

@@ -1,0 +1,284 @@
+//! The breadth-first form of the tracer: the paths of a whole row of pixels advance
+//! together, one bounce at a time.
+//!
+//! Traced one by one, a path is a single chain of dependent steps (hit, shade, next
+//! hit), so the processor spends most of its time waiting on latencies and mispredicted
+//! branches. A row's paths are independent of each other: intersected and shaded as a
+//! batch, consecutive iterations overlap instead of waiting.
+//!
+//! The answer is bit for bit the recursive [`Tracer::trace_pair`]'s:
+//! - each pixel keeps its own generator and draws in the same order as the recursion
+//!   (pair `k`'s two jitters, then at every bounce the first path's draws before the
+//!   second's, then pair `k + 1`), so interleaving pixels changes no draw;
+//! - each path logs its bounces' `(direct, attenuation)` and folds them back from the
+//!   last, `c ← saturate(direct + attenuation ∘ c)`, the recursion's own arithmetic in its
+//!   own order.
+
+use super::trace::{Step, Tracer, saturate};
+use crate::camera::Camera;
+use crate::float::{Float, lit};
+use crate::material::Material;
+use crate::ray::Ray;
+use crate::scene::Nearests;
+use crate::shape::{Hit, Hittable};
+use crate::vec3::Color;
+use rand::Rng;
+
+/// The buffers of one row's paths, kept from row to row.
+pub(super) struct Row<'a, F, M, R> {
+    /// Each pixel's generator.
+    rngs: Vec<R>,
+    /// Each pixel's sum of sample colours.
+    sums: Vec<Color<F>>,
+    /// The rays still travelling, and the slot of each one's path (`pixel · paths + j`).
+    rays: Vec<Ray<F>>,
+    slots: Vec<u32>,
+    next_rays: Vec<Ray<F>>,
+    next_slots: Vec<u32>,
+    /// What each live ray hit.
+    hits: Vec<Option<(Hit<F>, &'a M)>>,
+    near: Nearests<F>,
+    /// Each path's bounces so far, `(direct, attenuation)`.
+    logs: Vec<Vec<(Color<F>, Color<F>)>>,
+    /// Each path's colour where it ended (background, black, or its last direct light).
+    ends: Vec<Color<F>>,
+}
+
+impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
+    /// Empty buffers.
+    pub(super) fn new() -> Self {
+        Self {
+            rngs: Vec::new(),
+            sums: Vec::new(),
+            rays: Vec::new(),
+            slots: Vec::new(),
+            next_rays: Vec::new(),
+            next_slots: Vec::new(),
+            hits: Vec::new(),
+            near: Nearests::default(),
+            logs: Vec::new(),
+            ends: Vec::new(),
+        }
+    }
+
+    /// Renders the pixels `x0..x0 + out.len()` of row `y` into `out`, pixel `x` drawing
+    /// from `rng(x)`: with one sample through the pixel centre, otherwise the mean of
+    /// `spp` jittered samples, traced in pairs (and the last alone if `spp` is odd).
+    pub(super) fn render<S, C>(
+        &mut self,
+        tracer: &mut Tracer<'a, F, S, M>,
+        camera: &C,
+        (x0, y): (usize, usize),
+        spp: u32,
+        rng: impl Fn(usize) -> R,
+        out: &mut [[f64; 3]],
+    ) where
+        S: Hittable<F>,
+        M: Material<F, R>,
+        C: Camera<F>,
+    {
+        let width = out.len();
+        self.rngs.clear();
+        self.rngs.extend((x0..x0 + width).map(rng));
+        let py = lit::<F>(y as f64);
+        let px = |i: usize| lit::<F>((x0 + i) as f64);
+        if spp == 1 {
+            self.start(1, |i, _, _| camera.ray(px(i), py));
+            self.trace(tracer);
+            for (o, &c) in out.iter_mut().zip(&self.ends) {
+                *o = c.to_f64();
+            }
+            return;
+        }
+        let jittered = |i: usize, rng: &mut R| {
+            let (dx, dy) = crate::sampling::pixel_jitter(rng);
+            camera.ray(px(i) + lit(dx), py + lit(dy))
+        };
+        self.sums.clear();
+        self.sums.resize(width, Color::zero());
+        for paths in std::iter::repeat_n(2, spp as usize / 2).chain((spp % 2 == 1).then_some(1)) {
+            self.start(paths, |i, _, rng| jittered(i, rng));
+            self.trace(tracer);
+            for (k, &c) in self.ends.iter().enumerate() {
+                let sum = &mut self.sums[k / paths];
+                *sum = *sum + c;
+            }
+        }
+        // Each sample is finite, but their sum may overflow: cap the mean again.
+        let n = lit::<F>(f64::from(spp));
+        for (o, &sum) in out.iter_mut().zip(&self.sums) {
+            *o = saturate(sum / n).to_f64();
+        }
+    }
+
+    /// Starts `paths` paths per pixel, path `j` of pixel `i` on `ray(i, j, rng_i)`, drawn
+    /// pixel by pixel and in each pixel path by path.
+    fn start(&mut self, paths: usize, mut ray: impl FnMut(usize, usize, &mut R) -> Ray<F>) {
+        let slots = self.rngs.len() * paths;
+        self.rays.clear();
+        self.slots.clear();
+        for (i, rng) in self.rngs.iter_mut().enumerate() {
+            for j in 0..paths {
+                self.rays.push(ray(i, j, rng));
+                self.slots.push((i * paths + j) as u32);
+            }
+        }
+        self.logs.resize_with(slots.max(self.logs.len()), Vec::new);
+        self.logs[..slots].iter_mut().for_each(Vec::clear);
+        self.ends.clear();
+        self.ends.resize(slots, Color::zero());
+    }
+
+    /// Traces the live paths to their ends and leaves each path's colour in `ends`.
+    fn trace<S>(&mut self, tracer: &mut Tracer<'a, F, S, M>)
+    where
+        S: Hittable<F>,
+        M: Material<F, R>,
+    {
+        let paths = self.ends.len() / self.rngs.len().max(1);
+        let scene = tracer.scene;
+        let mut depth = 0;
+        while !self.rays.is_empty() {
+            tracer.rays += self.rays.len() as u64;
+            scene.hit_all(&self.rays, &mut self.near, &mut self.hits);
+            self.next_rays.clear();
+            self.next_slots.clear();
+            for ((ray, &slot), &hit) in self.rays.iter().zip(&self.slots).zip(&self.hits) {
+                let rng = &mut self.rngs[slot as usize / paths];
+                match tracer.shade(ray, hit, depth, rng) {
+                    Step::Done(colour) => self.ends[slot as usize] = colour,
+                    Step::Go(next, direct, attenuation) => {
+                        self.logs[slot as usize].push((direct, attenuation));
+                        self.next_rays.push(next);
+                        self.next_slots.push(slot);
+                    }
+                }
+            }
+            std::mem::swap(&mut self.rays, &mut self.next_rays);
+            std::mem::swap(&mut self.slots, &mut self.next_slots);
+            depth += 1;
+        }
+        for (end, log) in self.ends.iter_mut().zip(&self.logs) {
+            *end = log.iter().rev().fold(*end, |c, &(direct, attenuation)| {
+                saturate(direct + attenuation * c)
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::{DefaultRng, RenderSettings, pixel_seed, render};
+    use crate::scene::{Acceleration, EnumScene};
+    use crate::shape::{Plane, Sphere, Triangle};
+    use crate::vec3::Vec3;
+    use crate::{Background, Dielectric, Lambertian, Mirror, PointLight, ScreenCamera};
+    use rand::{RngExt, SeedableRng};
+
+    /// The mean colour of `spp` samples of pixel `(x, y)`, path by path with the recursive
+    /// [`Tracer::trace_pair`]: the form the row's render must reproduce bit for bit.
+    fn sample_pixel<R, F, S, M, C>(
+        tracer: &mut Tracer<'_, F, S, M>,
+        camera: &C,
+        x: usize,
+        y: usize,
+        spp: u32,
+        rng: &mut R,
+    ) -> Color<F>
+    where
+        R: Rng + ?Sized,
+        F: Float,
+        S: Hittable<F>,
+        M: Material<F, R>,
+        C: Camera<F>,
+    {
+        let (px, py) = (lit::<F>(x as f64), lit::<F>(y as f64));
+        if spp == 1 {
+            return tracer.trace(&camera.ray(px, py), 0, rng);
+        }
+        let jittered = |rng: &mut R| {
+            let (dx, dy) = crate::sampling::pixel_jitter(rng);
+            camera.ray(px + lit(dx), py + lit(dy))
+        };
+        let mut sum = Color::zero();
+        // Samples in pairs, traced side by side (the second's jitter drawn before the first's path).
+        for _ in 0..spp / 2 {
+            let (a, b) = (jittered(rng), jittered(rng));
+            let (ca, cb) = tracer.trace_pair(&a, &b, 0, rng);
+            sum = sum + ca + cb;
+        }
+        if spp % 2 == 1 {
+            let ray = jittered(rng);
+            sum = sum + tracer.trace(&ray, 0, rng);
+        }
+        // Each sample is finite, but their sum may overflow: cap the mean again.
+        saturate(sum / lit(f64::from(spp)))
+    }
+
+    /// Matte, mirror and glass spheres (`n` of them, at random), a plane, a triangle and two
+    /// point lights: every kind of bounce, absorbed paths, shadow rays, and with enough
+    /// spheres a BVH.
+    fn scene(n: usize) -> EnumScene<f64> {
+        let mut rng = DefaultRng::seed_from_u64(n as u64);
+        let mut scene = EnumScene::new(Background::default());
+        for i in 0..n {
+            let c = Vec3::new(
+                rng.random_range(-2.5..2.5),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-6.0..-3.0),
+            );
+            let s = Sphere::new(c, rng.random_range(0.1..0.6)).unwrap();
+            let a = Vec3::new(rng.random_range(0.0..1.0), rng.random_range(0.0..1.0), 0.7);
+            match i % 3 {
+                0 => scene.add(s, Lambertian::new(a).unwrap()),
+                1 => scene.add(s, Mirror::new(a).unwrap()),
+                _ => scene.add(s, Dielectric::new(1.5).unwrap()),
+            };
+        }
+        let p = |x, y, z| Vec3::new(x, y, z);
+        scene.add(
+            Plane::new(p(0.0, -1.0, 0.0), p(0.0, 1.0, 0.0)).unwrap(),
+            Lambertian::new(p(0.5, 0.5, 0.5)).unwrap(),
+        );
+        scene.add(
+            Triangle::new(p(-1.0, -1.0, -4.0), p(1.0, -1.0, -4.5), p(0.0, 1.2, -5.0)).unwrap(),
+            Mirror::new(p(0.9, 0.8, 0.6)).unwrap(),
+        );
+        scene.add_light(PointLight::new(p(-2.0, 3.0, -2.0), p(9.0, 8.0, 7.0)).unwrap());
+        scene.add_light(PointLight::new(p(2.0, 2.0, -1.0), p(3.0, 4.0, 5.0)).unwrap());
+        scene
+    }
+
+    /// The row by row, bounce by bounce render gives the recursive per-pixel render's
+    /// pixels bit for bit and the same ray count, with one sample (the pixel centre), even
+    /// and odd sample counts, a depth limit that cuts paths short, through the plain loop
+    /// and through a BVH. (Any change to the order of draws, the fold of a path's bounces,
+    /// or a path's slot fails it.)
+    #[test]
+    fn rows_render_what_the_recursion_renders() {
+        let cam = ScreenCamera::new(24, 12).unwrap();
+        for (n, spp, depth) in [(6, 1, 8), (6, 2, 8), (6, 5, 3), (40, 3, 8), (40, 4, 50)] {
+            let scene = scene(n);
+            assert_eq!(scene.uses_bvh(), n >= Acceleration::AUTO_THRESHOLD);
+            let settings = RenderSettings::new(spp, depth, 7).unwrap();
+            let got = render(&scene, &cam, &settings).unwrap();
+            let mut tracer = Tracer::new(&scene, depth);
+            let mut want = Vec::new();
+            for y in 0..12 {
+                for x in 0..24 {
+                    let mut rng = DefaultRng::seed_from_u64(pixel_seed(7, (y * 24 + x) as u64));
+                    want.push(sample_pixel(&mut tracer, &cam, x, y, spp, &mut rng).to_f64());
+                }
+            }
+            let first_difference = got
+                .image
+                .pixels()
+                .iter()
+                .zip(&want)
+                .position(|(a, b)| a.map(f64::to_bits) != b.map(f64::to_bits));
+            assert_eq!(first_difference, None, "{n} spheres, {spp} spp, depth {depth}");
+            assert_eq!(got.stats.rays, tracer.rays());
+        }
+    }
+}
