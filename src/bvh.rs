@@ -3,7 +3,10 @@
 //! leaves; the scene owns the primitives, lays out each leaf's as it likes, and tests a
 //! whole leaf in the traversal's callback.
 
+mod stream;
 mod wide;
+
+pub use stream::{Entry, Streams};
 
 use crate::aabb::Aabb;
 use crate::float::{Float, lit};
@@ -46,6 +49,9 @@ pub struct Bvh<F> {
     wide: Vec<Wide<F>>,
     /// The wide tree's root (`None` for an empty hierarchy).
     root: Option<Child>,
+    /// For each wide node, its lanes near to far in each direction octant
+    /// ([`Bvh::traverse_all`]).
+    orders: Vec<[[u8; 4]; 8]>,
     /// Levels below the wide root.
     wide_depth: usize,
 }
@@ -79,6 +85,7 @@ impl<F: Float> Bvh<F> {
             leaves: Vec::new(),
             wide: Vec::new(),
             root: None,
+            orders: Vec::new(),
             wide_depth: 0,
         };
         if !items.is_empty() {
@@ -95,6 +102,7 @@ impl<F: Float> Bvh<F> {
                 Child::Node(wide::collapse(&bvh.nodes, 0, &mut bvh.wide))
             });
             bvh.wide_depth = wide::depth(&bvh.wide, bvh.root);
+            bvh.orders = bvh.wide.iter().map(Wide::orders).collect();
         }
         bvh
     }

@@ -129,23 +129,19 @@ where
     let start = Instant::now();
     let mut image = Image::new(tile.width, tile.height)?;
     let progress = progress_bar(settings.progress, tile.height as u64);
+    let band = BAND_ROWS * tile.width;
     let rays: u64 = image
         .pixels_mut()
-        .par_chunks_mut(tile.width)
+        .par_chunks_mut(band)
         .enumerate()
-        .map_init(wavefront::Row::new, |paths, (row, pixels)| {
-            let y = tile.y + row;
+        .map_init(wavefront::Row::new, |paths, (k, pixels)| {
             let mut tracer = Tracer::new(scene, settings.max_depth);
-            let rng = |x: usize| R::seed_from_u64(pixel_seed(settings.seed, (y * camera.width() + x) as u64));
-            paths.render(
-                &mut tracer,
-                camera,
-                (tile.x, y),
-                settings.samples_per_pixel,
-                rng,
-                pixels,
-            );
-            progress.inc(1);
+            let at = |i: usize| (tile.x + i % tile.width, tile.y + (k * band + i) / tile.width);
+            let rng = |x: usize, y: usize| {
+                R::seed_from_u64(pixel_seed(settings.seed, (y * camera.width() + x) as u64))
+            };
+            paths.render(&mut tracer, camera, at, settings.samples_per_pixel, rng, pixels);
+            progress.inc(pixels.len().div_ceil(tile.width) as u64);
             tracer.rays()
         })
         .sum();
@@ -159,6 +155,9 @@ where
         },
     })
 }
+
+/// Rows rendered together as one batch of paths ([`wavefront`]).
+const BAND_ROWS: usize = 4;
 
 /// A progress bar on stderr (work done, rate, time left), hidden unless asked for and
 /// stderr is a terminal.

@@ -26,6 +26,46 @@ pub(super) struct Wide<F> {
     child: [Child; 4],
 }
 
+impl<F: Float> Wide<F> {
+    /// The four children's boxes along `axis`: `(lo, hi)`.
+    #[inline(always)]
+    pub(super) fn bounds(&self, axis: usize) -> (F4<F>, F4<F>) {
+        (self.lo[axis], self.hi[axis])
+    }
+
+    /// What lane `lane` points to.
+    #[inline(always)]
+    pub(super) fn child(&self, lane: usize) -> Child {
+        self.child[lane]
+    }
+
+    /// For each direction octant (bit `a` set where the direction's axis `a` is
+    /// negative), the node's lanes near to far along the octant's diagonal: by the
+    /// centres of their boxes projected on it, empty lanes last.
+    pub(super) fn orders(&self) -> [[u8; 4]; 8] {
+        std::array::from_fn(|octant| {
+            let key = |lane: usize| {
+                if self.child[lane] == Child::Empty {
+                    return f64::INFINITY;
+                }
+                (0..3)
+                    .map(|axis| {
+                        let centre = (self.lo[axis].0[lane] + self.hi[axis].0[lane]).to_f64();
+                        if octant & (1 << axis) != 0 {
+                            -centre
+                        } else {
+                            centre
+                        }
+                    })
+                    .sum()
+            };
+            let mut lanes = [0u8, 1, 2, 3];
+            lanes.sort_by(|&a, &b| key(a as usize).total_cmp(&key(b as usize)));
+            lanes
+        })
+    }
+}
+
 /// Collapses the binary tree under binary node `at` into wide nodes appended to `out`;
 /// returns the index of the wide node made for `at` (which must be interior).
 pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wide<F>>) -> u32 {

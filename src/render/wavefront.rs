@@ -28,6 +28,8 @@ use rand::Rng;
 pub(super) struct Row<'a, F, M, R> {
     /// Each pixel's generator.
     rngs: Vec<R>,
+    /// Each pixel's coordinates `(x, y)`.
+    centres: Vec<(F, F)>,
     /// Each pixel's sum of sample colours.
     sums: Vec<Color<F>>,
     /// The rays still travelling, and the slot of each one's path (`pixel · paths + j`).
@@ -49,6 +51,7 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
     pub(super) fn new() -> Self {
         Self {
             rngs: Vec::new(),
+            centres: Vec::new(),
             sums: Vec::new(),
             rays: Vec::new(),
             slots: Vec::new(),
@@ -61,16 +64,16 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
         }
     }
 
-    /// Renders the pixels `x0..x0 + out.len()` of row `y` into `out`, pixel `x` drawing
-    /// from `rng(x)`: with one sample through the pixel centre, otherwise the mean of
-    /// `spp` jittered samples, traced in pairs (and the last alone if `spp` is odd).
+    /// Renders pixels into `out`, `out[i]` being pixel `at(i) = (x, y)` of the image and
+    /// drawing from `rng(x, y)`: with one sample through the pixel centre, otherwise the
+    /// mean of `spp` jittered samples, traced in pairs (and the last alone if `spp` is odd).
     pub(super) fn render<S, C>(
         &mut self,
         tracer: &mut Tracer<'a, F, S, M>,
         camera: &C,
-        (x0, y): (usize, usize),
+        at: impl Fn(usize) -> (usize, usize),
         spp: u32,
-        rng: impl Fn(usize) -> R,
+        rng: impl Fn(usize, usize) -> R,
         out: &mut [[f64; 3]],
     ) where
         S: Hittable<F>,
@@ -79,31 +82,43 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
     {
         let width = out.len();
         self.rngs.clear();
-        self.rngs.extend((x0..x0 + width).map(rng));
-        let py = lit::<F>(y as f64);
-        let px = |i: usize| lit::<F>((x0 + i) as f64);
+        self.centres.clear();
+        for i in 0..width {
+            let (x, y) = at(i);
+            self.rngs.push(rng(x, y));
+            self.centres.push((lit(x as f64), lit(y as f64)));
+        }
+        let centres = std::mem::take(&mut self.centres);
+        let px = |i: usize| centres[i];
         if spp == 1 {
-            self.start(1, |i, _, _| camera.ray(px(i), py));
+            self.start(1, |i, _, _| {
+                let (x, y) = px(i);
+                camera.ray(x, y)
+            });
             self.trace(tracer);
             for (o, &c) in out.iter_mut().zip(&self.ends) {
                 *o = c.to_f64();
             }
+            self.centres = centres;
             return;
         }
         let jittered = |i: usize, rng: &mut R| {
             let (dx, dy) = crate::sampling::pixel_jitter(rng);
-            camera.ray(px(i) + lit(dx), py + lit(dy))
+            let (x, y) = px(i);
+            camera.ray(x + lit(dx), y + lit(dy))
         };
         self.sums.clear();
         self.sums.resize(width, Color::zero());
         for paths in std::iter::repeat_n(2, spp as usize / 2).chain((spp % 2 == 1).then_some(1)) {
             self.start(paths, |i, _, rng| jittered(i, rng));
             self.trace(tracer);
-            for (k, &c) in self.ends.iter().enumerate() {
-                let sum = &mut self.sums[k / paths];
-                *sum = *sum + c;
+            for (sum, ends) in self.sums.iter_mut().zip(self.ends.chunks(paths)) {
+                for &c in ends {
+                    *sum = *sum + c;
+                }
             }
         }
+        self.centres = centres;
         // Each sample is finite, but their sum may overflow: cap the mean again.
         let n = lit::<F>(f64::from(spp));
         for (o, &sum) in out.iter_mut().zip(&self.sums) {
@@ -135,7 +150,8 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
         S: Hittable<F>,
         M: Material<F, R>,
     {
-        let paths = self.ends.len() / self.rngs.len().max(1);
+        // Paths per pixel (one or two): the pixel of slot `s` is `s >> shift`.
+        let shift = (self.ends.len() / self.rngs.len().max(1)).trailing_zeros();
         let scene = tracer.scene;
         let mut depth = 0;
         while !self.rays.is_empty() {
@@ -144,7 +160,7 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
             self.next_rays.clear();
             self.next_slots.clear();
             for ((ray, &slot), &hit) in self.rays.iter().zip(&self.slots).zip(&self.hits) {
-                let rng = &mut self.rngs[slot as usize / paths];
+                let rng = &mut self.rngs[(slot >> shift) as usize];
                 match tracer.shade(ray, hit, depth, rng) {
                     Step::Done(colour) => self.ends[slot as usize] = colour,
                     Step::Go(next, direct, attenuation) => {

@@ -3,7 +3,7 @@
 
 use super::{Acceleration, Object};
 use crate::aabb::Aabb;
-use crate::bvh::Bvh;
+use crate::bvh::{Bvh, Streams};
 use crate::float::Float;
 use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, LANES, Sphere, Sphere4};
@@ -36,7 +36,9 @@ const NONE: u32 = u32::MAX;
 pub(crate) struct Nearests<F> {
     t: Vec<F>,
     id: Vec<u32>,
-    other: Vec<Option<Hit<F>>>,
+    /// The record of another shape's hit, with its object.
+    other: Vec<Option<(u32, Hit<F>)>>,
+    streams: Streams<F>,
 }
 
 impl<F: Float> Nearests<F> {
@@ -57,9 +59,10 @@ impl<F: Float> Nearests<F> {
     fn take(&mut self, i: usize) -> Nearest<F> {
         let (t, id) = (self.t[i], self.id[i]);
         let found = match self.other.get_mut(i).and_then(Option::take) {
-            Some(hit) => Found::Other(hit),
-            None if id == NONE => Found::Nothing,
-            None => Found::Sphere,
+            // (Unless a sphere of the tree has won since.)
+            Some((other, hit)) if other == id => Found::Other(hit),
+            _ if id == NONE => Found::Nothing,
+            _ => Found::Sphere,
         };
         Nearest {
             t,
@@ -396,14 +399,39 @@ impl<F: Float> Index<F> {
                 if let Some(hit) = objects[other as usize].shape.hit(ray, bound)
                     && (hit.t < *t || (hit.t == *t && other < *id))
                 {
-                    (*t, *id, *record) = (hit.t, other, Some(hit));
+                    (*t, *id, *record) = (hit.t, other, Some((other, hit)));
                 }
             }
         }
+        // A tree of packets alone is searched by the whole batch at once.
+        let streamed = match (&self.bvh, &self.leaves) {
+            (Some(bvh), Leaves::Packets) => {
+                let (ts, ids) = (&mut near.t, &mut near.id);
+                bvh.traverse_all(rays, ts, &mut near.streams, |k, entries, ts| {
+                    let p = &self.in_tree.packets[k];
+                    for &(r, entry) in entries {
+                        let r = r as usize;
+                        if entry > ts[r] {
+                            continue;
+                        }
+                        let hits = p.spheres.hits(&rays[r]);
+                        let nearest = hits.min_lane();
+                        if nearest < F::infinity() && nearest <= ts[r] {
+                            let lane = p.ids[hits.mask_eq(nearest).trailing_zeros() as usize];
+                            if nearest < ts[r] || lane < ids[r] {
+                                (ts[r], ids[r]) = (nearest, lane);
+                            }
+                        }
+                    }
+                });
+                true
+            }
+            _ => false,
+        };
         out.clear();
         for (i, ray) in rays.iter().enumerate() {
             let mut best = near.take(i);
-            if let Some(bvh) = &self.bvh {
+            if let Some(bvh) = self.bvh.as_ref().filter(|_| !streamed) {
                 match &self.leaves {
                     Leaves::Packets => bvh.traverse(ray, best.t, |k, _| {
                         Self::nearest_in(self.in_tree.packet(k), objects, ray, &mut best).then_some(best.t)

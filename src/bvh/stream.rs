@@ -1,0 +1,186 @@
+//! The stream traversal: a whole batch of rays walks the wide tree together, each node
+//! tested against every ray that reached it in one tight loop.
+//!
+//! One ray's walk is a chain of dependent steps (node load, slab test, mask, next node)
+//! broken by branches no predictor guesses, so the processor mostly waits. Here the
+//! iterations of a node's loop belong to different rays and do not depend on each
+//! other: they overlap. The price is the order: all the rays of a stream visit a node's
+//! children in one order, the near-to-far order along their common direction octant
+//! (the batch is split by octant first), not each ray's own; a ray still skips a child
+//! its nearest hit so far has moved out of reach.
+//!
+//! The answer does not depend on the order: a leaf's hits update each ray's nearest
+//! `(t, object)` by the same rule whatever came first, and a box is skipped only when it
+//! starts beyond that `t`, as in [`Bvh::traverse`].
+
+use super::Bvh;
+use super::wide::{Child, Wide};
+use crate::float::Float;
+use crate::lanes::F4;
+use crate::ray::Ray;
+
+/// A ray as the slab test needs it: origin, reciprocal direction, and the reciprocal
+/// grown for the far faces (see [`crate::aabb::RayBoxTest`]).
+#[derive(Clone, Copy, Debug)]
+struct Prepared<F> {
+    origin: [F; 3],
+    inv_d: [F; 3],
+    inv_far: [F; 3],
+}
+
+/// A ray of the batch that has reached a node: its index and its entry distance into
+/// the node's box.
+pub type Entry<F> = (u32, F);
+
+/// Buffers for [`Bvh::traverse_all`], kept from batch to batch.
+#[derive(Clone, Debug, Default)]
+pub struct Streams<F> {
+    prepared: Vec<Prepared<F>>,
+    /// The rays of each direction octant.
+    octants: [Vec<Entry<F>>; 8],
+    /// One for each level of the tree.
+    levels: Vec<Level<F>>,
+}
+
+/// A level's buffers: each ray's slab test against the node's four boxes, and the rays
+/// entering the child being walked.
+#[derive(Clone, Debug, Default)]
+struct Level<F> {
+    tests: Vec<(u32, u32, F4<F>)>,
+    children: Vec<Entry<F>>,
+}
+
+impl<F: Float> Bvh<F> {
+    /// Calls `leaf(k, entries, t_max)` for each leaf `k` with the rays of `rays` whose
+    /// boxes lead to it, as `(ray index, entry distance)`; `t_max[i]` is ray `i`'s
+    /// current reach, which the callback lowers as it finds hits. A leaf's callback gets
+    /// only rays whose entry was within reach when the leaf's parent was tested, and
+    /// must itself skip those with `entry > t_max` by then.
+    pub fn traverse_all(
+        &self,
+        rays: &[Ray<F>],
+        t_max: &mut [F],
+        streams: &mut Streams<F>,
+        mut leaf: impl FnMut(usize, &[Entry<F>], &mut [F]),
+    ) {
+        debug_assert_eq!(rays.len(), t_max.len());
+        let Some(root) = self.root else { return };
+        let Streams {
+            prepared,
+            octants,
+            levels,
+        } = streams;
+        prepared.clear();
+        octants.iter_mut().for_each(Vec::clear);
+        for (i, ray) in rays.iter().enumerate() {
+            let d = ray.direction;
+            let inv = [d.x, d.y, d.z].map(|d| F::one() / d);
+            let octant = usize::from(inv[0] < F::zero())
+                | usize::from(inv[1] < F::zero()) << 1
+                | usize::from(inv[2] < F::zero()) << 2;
+            octants[octant].push((i as u32, F::zero()));
+            prepared.push(Prepared {
+                origin: [ray.origin.x, ray.origin.y, ray.origin.z],
+                inv_d: inv,
+                inv_far: inv.map(|i| i * crate::aabb::far_growth()),
+            });
+        }
+        let Child::Node(root) = root else {
+            // A tree of one leaf: every ray goes to it.
+            for list in octants.iter() {
+                if !list.is_empty() {
+                    leaf(0, list, t_max);
+                }
+            }
+            return;
+        };
+        levels.resize_with(levels.len().max(self.wide_depth + 1), Default::default);
+        let mut walk = Walk {
+            bvh: self,
+            prepared,
+            t_max,
+            leaf: &mut leaf,
+        };
+        for (octant, list) in octants.iter().enumerate() {
+            if !list.is_empty() {
+                walk.node(root, list, octant, levels);
+            }
+        }
+    }
+}
+
+/// One stream's walk down the tree.
+struct Walk<'w, F, L> {
+    bvh: &'w Bvh<F>,
+    prepared: &'w [Prepared<F>],
+    t_max: &'w mut [F],
+    leaf: &'w mut L,
+}
+
+impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
+    /// Tests wide node `i` against the rays `list` of direction octant `octant`, then
+    /// walks its children near to far along the octant with the rays entering each.
+    ///
+    /// No branch depends on a ray: a ray out of reach is tested anyway and enters
+    /// nothing, and each child's rays are gathered by writing every ray and counting
+    /// only those whose mask bit is set. (Branching on each ray's mask bits mispredicts
+    /// about half of them.)
+    fn node(&mut self, i: u32, list: &[Entry<F>], octant: usize, levels: &mut [Level<F>]) {
+        let n = &self.bvh.wide[i as usize];
+        let (here, deeper) = levels.split_first_mut().expect("levels cover the tree's depth");
+        here.tests.clear();
+        here.tests.extend(list.iter().map(|&(r, entry)| {
+            let reach = self.t_max[r as usize];
+            let (t, entered) = entries(n, &self.prepared[r as usize], octant, reach);
+            let within = if entry <= reach { 0b1111 } else { 0 };
+            (r, entered & within, t)
+        }));
+        if here.children.len() < list.len() {
+            here.children.resize(list.len(), (0, F::zero()));
+        }
+        for &lane in &self.bvh.orders[i as usize][octant] {
+            let lane = lane as usize;
+            let child = n.child(lane);
+            if child == Child::Empty {
+                continue;
+            }
+            let (slots, mut count) = (&mut here.children[..list.len()], 0);
+            for &(r, entered, t) in &here.tests {
+                slots[count] = (r, t.0[lane]);
+                count += (entered >> lane) as usize & 1;
+            }
+            let children = &here.children[..count];
+            if children.is_empty() {
+                continue;
+            }
+            match child {
+                Child::Node(c) => self.node(c, children, octant, deeper),
+                Child::Leaf(k) => (self.leaf)(k as usize, children, self.t_max),
+                Child::Empty => {}
+            }
+        }
+    }
+}
+
+/// The entry distance into each of the node's four boxes and the mask of those the ray
+/// meets in `(0, t_max]`: [`Bvh::traverse`]'s slab test, operation for operation, with
+/// each axis's near side picked by the stream's octant.
+#[inline(always)]
+fn entries<F: Float>(n: &Wide<F>, p: &Prepared<F>, octant: usize, t_max: F) -> (F4<F>, u32) {
+    let mut t0 = F4::splat(F::zero());
+    let mut t1 = F4::splat(t_max);
+    for axis in 0..3 {
+        let (lo, hi) = n.bounds(axis);
+        let (near, far) = if octant & (1 << axis) != 0 {
+            (hi, lo)
+        } else {
+            (lo, hi)
+        };
+        let o = F4::splat(p.origin[axis]);
+        let t_near = (near - o) * F4::splat(p.inv_d[axis]);
+        let t_far = (far - o) * F4::splat(p.inv_far[axis]);
+        t0 = F4::select_lt(t0, t_near, t_near, t0);
+        t1 = F4::select_lt(t_far, t1, t_far, t1);
+    }
+    (t0, F4::mask_le(t0, t1))
+}
