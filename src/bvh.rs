@@ -235,13 +235,31 @@ impl<F: Float> Bvh<F> {
     /// is dropped without another test.
     #[inline]
     pub fn traverse(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
+        self.traverse_from(self.root, ray, t_max, visit);
+    }
+
+    /// [`Bvh::traverse`] in the subtree `start` only.
+    #[inline]
+    fn traverse_from(
+        &self,
+        start: Option<Child>,
+        ray: &Ray<F>,
+        t_max: F,
+        visit: impl FnMut(usize, F) -> Option<F>,
+    ) {
         // Each wide level stacks at most four children, one of which is popped at once.
         const INLINE: usize = 24;
         let need = 3 * self.wide_depth + 4;
         if need <= INLINE {
-            self.traverse_wide(&mut [(Child::Empty, F::zero()); INLINE], ray, t_max, visit);
+            self.traverse_wide(start, &mut [(Child::Empty, F::zero()); INLINE], ray, t_max, visit);
         } else {
-            self.traverse_wide(&mut vec![(Child::Empty, F::zero()); need], ray, t_max, visit);
+            self.traverse_wide(
+                start,
+                &mut vec![(Child::Empty, F::zero()); need],
+                ray,
+                t_max,
+                visit,
+            );
         }
     }
 

@@ -151,16 +151,17 @@ impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
         Some((hit, &object.material))
     }
 
-    /// [`Scene::hit`] with no bound for each of `rays`, into `out` (cleared first): the
-    /// same answers, found for the whole batch at once (`near` is scratch space).
+    /// [`Scene::hit`] with no bound for each of `rays`, handed to `each(i, hit)` in the
+    /// rays' order: the same answers, found for the whole batch at once (`near` is
+    /// scratch space).
     #[inline]
     pub(crate) fn hit_all<'s>(
         &'s self,
         rays: &[Ray<F>],
         near: &mut Nearests<F>,
-        out: &mut Vec<Option<(Hit<F>, &'s M)>>,
+        each: impl FnMut(usize, Option<(Hit<F>, &'s M)>),
     ) {
-        self.index().hit_all(&self.objects, rays, near, out);
+        self.index().hit_all(&self.objects, rays, near, each);
     }
 
     /// Whether any object blocks the ray in `(0, t_max)`; stops at the first.

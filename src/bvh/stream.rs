@@ -19,6 +19,10 @@ use crate::float::Float;
 use crate::lanes::F4;
 use crate::ray::Ray;
 
+/// A node reached by this many rays or fewer is searched by each ray alone, nearest
+/// child first (the stream's overhead per node outweighs its overlap).
+const ALONE: usize = 4;
+
 /// A ray as the slab test needs it: origin, reciprocal direction, and the reciprocal
 /// grown for the far faces (see [`crate::aabb::RayBoxTest`]).
 #[derive(Clone, Copy, Debug)]
@@ -97,6 +101,7 @@ impl<F: Float> Bvh<F> {
         levels.resize_with(levels.len().max(self.wide_depth + 1), Default::default);
         let mut walk = Walk {
             bvh: self,
+            rays,
             prepared,
             t_max,
             leaf: &mut leaf,
@@ -112,6 +117,7 @@ impl<F: Float> Bvh<F> {
 /// One stream's walk down the tree.
 struct Walk<'w, F, L> {
     bvh: &'w Bvh<F>,
+    rays: &'w [Ray<F>],
     prepared: &'w [Prepared<F>],
     t_max: &'w mut [F],
     leaf: &'w mut L,
@@ -126,6 +132,21 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
     /// only those whose mask bit is set. (Branching on each ray's mask bits mispredicts
     /// about half of them.)
     fn node(&mut self, i: u32, list: &[Entry<F>], octant: usize, levels: &mut [Level<F>]) {
+        if list.len() <= ALONE {
+            for &(r, entry) in list {
+                let ri = r as usize;
+                if entry > self.t_max[ri] {
+                    continue;
+                }
+                let (leaf, t_max) = (&mut *self.leaf, &mut *self.t_max);
+                self.bvh
+                    .traverse_from(Some(Child::Node(i)), &self.rays[ri], t_max[ri], |k, _| {
+                        leaf(k, &[(r, F::zero())], t_max);
+                        Some(t_max[ri])
+                    });
+            }
+            return;
+        }
         let n = &self.bvh.wide[i as usize];
         let (here, deeper) = levels.split_first_mut().expect("levels cover the tree's depth");
         here.tests.clear();

@@ -176,11 +176,12 @@ impl<F: Float> WideRay<F> {
 }
 
 impl<F: Float> Bvh<F> {
-    /// The wide traversal behind [`Bvh::traverse`]; `stack` holds at least
-    /// `3·wide_depth + 1` entries.
+    /// The wide traversal behind [`Bvh::traverse`], from the subtree `start` (the root
+    /// for the whole tree); `stack` holds at least `3·wide_depth + 1` entries.
     #[inline]
     pub(super) fn traverse_wide(
         &self,
+        start: Option<Child>,
         stack: &mut [(Child, F)],
         ray: &Ray<F>,
         mut t_max: F,
@@ -188,8 +189,8 @@ impl<F: Float> Bvh<F> {
     ) {
         let r = WideRay::new(ray);
         let mut top = 0;
-        let mut current = match self.root {
-            Some(root) => root,
+        let mut current = match start {
+            Some(start) => start,
             None => return,
         };
         loop {

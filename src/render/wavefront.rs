@@ -20,12 +20,12 @@ use crate::float::{Float, lit};
 use crate::material::Material;
 use crate::ray::Ray;
 use crate::scene::Nearests;
-use crate::shape::{Hit, Hittable};
+use crate::shape::Hittable;
 use crate::vec3::Color;
 use rand::Rng;
 
 /// The buffers of one row's paths, kept from row to row.
-pub(super) struct Row<'a, F, M, R> {
+pub(super) struct Row<F, R> {
     /// Each pixel's generator.
     rngs: Vec<R>,
     /// Each pixel's coordinates `(x, y)`.
@@ -37,8 +37,6 @@ pub(super) struct Row<'a, F, M, R> {
     slots: Vec<u32>,
     next_rays: Vec<Ray<F>>,
     next_slots: Vec<u32>,
-    /// What each live ray hit.
-    hits: Vec<Option<(Hit<F>, &'a M)>>,
     near: Nearests<F>,
     /// Each path's bounces so far, `(direct, attenuation)`.
     logs: Vec<Vec<(Color<F>, Color<F>)>>,
@@ -46,7 +44,7 @@ pub(super) struct Row<'a, F, M, R> {
     ends: Vec<Color<F>>,
 }
 
-impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
+impl<F: Float, R: Rng> Row<F, R> {
     /// Empty buffers.
     pub(super) fn new() -> Self {
         Self {
@@ -57,7 +55,6 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
             slots: Vec::new(),
             next_rays: Vec::new(),
             next_slots: Vec::new(),
-            hits: Vec::new(),
             near: Nearests::default(),
             logs: Vec::new(),
             ends: Vec::new(),
@@ -67,9 +64,9 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
     /// Renders pixels into `out`, `out[i]` being pixel `at(i) = (x, y)` of the image and
     /// drawing from `rng(x, y)`: with one sample through the pixel centre, otherwise the
     /// mean of `spp` jittered samples, traced in pairs (and the last alone if `spp` is odd).
-    pub(super) fn render<S, C>(
+    pub(super) fn render<S, M, C>(
         &mut self,
-        tracer: &mut Tracer<'a, F, S, M>,
+        tracer: &mut Tracer<'_, F, S, M>,
         camera: &C,
         at: impl Fn(usize) -> (usize, usize),
         spp: u32,
@@ -145,7 +142,7 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
     }
 
     /// Traces the live paths to their ends and leaves each path's colour in `ends`.
-    fn trace<S>(&mut self, tracer: &mut Tracer<'a, F, S, M>)
+    fn trace<S, M>(&mut self, tracer: &mut Tracer<'_, F, S, M>)
     where
         S: Hittable<F>,
         M: Material<F, R>,
@@ -156,12 +153,14 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
         let mut depth = 0;
         while !self.rays.is_empty() {
             tracer.rays += self.rays.len() as u64;
-            scene.hit_all(&self.rays, &mut self.near, &mut self.hits);
             self.next_rays.clear();
             self.next_slots.clear();
-            for ((ray, &slot), &hit) in self.rays.iter().zip(&self.slots).zip(&self.hits) {
+            // Each ray is shaded as soon as its hit is known, in the rays' order.
+            let (rays, slots) = (&self.rays, &self.slots);
+            scene.hit_all(rays, &mut self.near, |i, hit| {
+                let slot = slots[i];
                 let rng = &mut self.rngs[(slot >> shift) as usize];
-                match tracer.shade(ray, hit, depth, rng) {
+                match tracer.shade(&rays[i], hit, depth, rng) {
                     Step::Done(colour) => self.ends[slot as usize] = colour,
                     Step::Go(next, direct, attenuation) => {
                         self.logs[slot as usize].push((direct, attenuation));
@@ -169,7 +168,7 @@ impl<'a, F: Float, M, R: Rng> Row<'a, F, M, R> {
                         self.next_slots.push(slot);
                     }
                 }
-            }
+            });
             std::mem::swap(&mut self.rays, &mut self.next_rays);
             std::mem::swap(&mut self.slots, &mut self.next_slots);
             depth += 1;

@@ -352,7 +352,8 @@ impl<F: Float> Index<F> {
         Self::record(objects, ray, best)
     }
 
-    /// [`Index::hit`] with no bound for each of `rays`, into `out`, `near` holding each
+    /// [`Index::hit`] with no bound for each of `rays`, handed to `each(i, hit)` in the
+    /// rays' order, `near` holding each
     /// ray's nearest `t` and object so far: the loop group's objects are tested one object
     /// over all the rays at a time (independent iterations the processor overlaps, where
     /// one ray's tests would wait on each other), then each ray searches the BVH.
@@ -362,7 +363,7 @@ impl<F: Float> Index<F> {
         objects: &'a [Object<S, M>],
         rays: &[Ray<F>],
         near: &mut Nearests<F>,
-        out: &mut Vec<Option<(Hit<F>, &'a M)>>,
+        mut each: impl FnMut(usize, Option<(Hit<F>, &'a M)>),
     ) {
         let g = self.looped.all();
         near.reset(rays.len(), !g.others.is_empty());
@@ -428,7 +429,6 @@ impl<F: Float> Index<F> {
             }
             _ => false,
         };
-        out.clear();
         for (i, ray) in rays.iter().enumerate() {
             let mut best = near.take(i);
             if let Some(bvh) = self.bvh.as_ref().filter(|_| !streamed) {
@@ -442,7 +442,10 @@ impl<F: Float> Index<F> {
                     }),
                 }
             }
-            out.push(Self::record(objects, ray, best).map(|(hit, object)| (hit, &object.material)));
+            each(
+                i,
+                Self::record(objects, ray, best).map(|(hit, object)| (hit, &object.material)),
+            );
         }
     }
 
@@ -657,7 +660,10 @@ mod tests {
                 Some(h.spawn(d))
             }));
             let (mut near, mut out) = (Nearests::default(), Vec::new());
-            index.hit_all(&objects, &rays, &mut near, &mut out);
+            index.hit_all(&objects, &rays, &mut near, |i, hit| {
+                assert_eq!(i, out.len(), "in the rays' order");
+                out.push(hit);
+            });
             assert_eq!(out.len(), rays.len());
             let mut hits = 0;
             for (ray, got) in rays.iter().zip(&out) {
