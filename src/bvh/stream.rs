@@ -46,12 +46,21 @@ pub struct Streams<F> {
     levels: Vec<Level<F>>,
 }
 
-/// A level's buffers: each ray's slab test against the node's four boxes, and the rays
-/// entering the child being walked.
-#[derive(Clone, Debug, Default)]
+/// Rays a node tests at once: a longer list is taken in chunks of this many.
+const CHUNK: usize = 64;
+
+/// A level's buffers: the rays of a chunk entering each of the node's four children.
+#[derive(Clone, Debug)]
 struct Level<F> {
-    tests: Vec<(u32, u32, F4<F>)>,
-    children: Vec<Entry<F>>,
+    children: [[Entry<F>; CHUNK]; 4],
+}
+
+impl<F: Float> Default for Level<F> {
+    fn default() -> Self {
+        Self {
+            children: [[(0, F::zero()); CHUNK]; 4],
+        }
+    }
 }
 
 impl<F: Float> Bvh<F> {
@@ -149,35 +158,32 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
         }
         let n = &self.bvh.wide[i as usize];
         let (here, deeper) = levels.split_first_mut().expect("levels cover the tree's depth");
-        here.tests.clear();
-        here.tests.extend(list.iter().map(|&(r, entry)| {
-            let reach = self.t_max[r as usize];
-            let (t, entered) = entries(n, &self.prepared[r as usize], octant, reach);
-            let within = if entry <= reach { 0b1111 } else { 0 };
-            (r, entered & within, t)
-        }));
-        if here.children.len() < list.len() {
-            here.children.resize(list.len(), (0, F::zero()));
-        }
-        for &lane in &self.bvh.orders[i as usize][octant] {
-            let lane = lane as usize;
-            let child = n.child(lane);
-            if child == Child::Empty {
-                continue;
+        for chunk in list.chunks(CHUNK) {
+            // Each ray is written to all four children's lists and kept (its list's count
+            // moved on) where it enters; the indices are masked to the lists' fixed size,
+            // so there is no bounds check either.
+            let mut counts = [0usize; 4];
+            for &(r, entry) in chunk {
+                let reach = self.t_max[r as usize];
+                let (t, entered) = entries(n, &self.prepared[r as usize], octant, reach);
+                let entered = if entry <= reach { entered } else { 0 };
+                let lanes = here.children.iter_mut().zip(&mut counts).zip(t.0);
+                for (lane, ((children, count), t)) in lanes.enumerate() {
+                    children[*count & (CHUNK - 1)] = (r, t);
+                    *count += (entered >> lane) as usize & 1;
+                }
             }
-            let (slots, mut count) = (&mut here.children[..list.len()], 0);
-            for &(r, entered, t) in &here.tests {
-                slots[count] = (r, t.0[lane]);
-                count += (entered >> lane) as usize & 1;
-            }
-            let children = &here.children[..count];
-            if children.is_empty() {
-                continue;
-            }
-            match child {
-                Child::Node(c) => self.node(c, children, octant, deeper),
-                Child::Leaf(k) => (self.leaf)(k as usize, children, self.t_max),
-                Child::Empty => {}
+            for &lane in &self.bvh.orders[i as usize][octant] {
+                let lane = lane as usize;
+                let children = &here.children[lane][..counts[lane]];
+                if children.is_empty() {
+                    continue;
+                }
+                match n.child(lane) {
+                    Child::Node(c) => self.node(c, children, octant, deeper),
+                    Child::Leaf(k) => (self.leaf)(k as usize, children, self.t_max),
+                    Child::Empty => {}
+                }
             }
         }
     }
