@@ -235,32 +235,31 @@ impl<F: Float> Bvh<F> {
     /// is dropped without another test.
     #[inline]
     pub fn traverse(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
-        self.traverse_from(self.root, ray, t_max, visit);
-    }
-
-    /// [`Bvh::traverse`] in the subtree `start` only.
-    #[inline]
-    fn traverse_from(
-        &self,
-        start: Option<Child>,
-        ray: &Ray<F>,
-        t_max: F,
-        visit: impl FnMut(usize, F) -> Option<F>,
-    ) {
-        // Each wide level stacks at most four children, one of which is popped at once.
         const INLINE: usize = 24;
-        let need = 3 * self.wide_depth + 4;
+        let need = self.stack_size();
         if need <= INLINE {
-            self.traverse_wide(start, &mut [(Child::Empty, F::zero()); INLINE], ray, t_max, visit);
+            self.traverse_wide(
+                self.root,
+                &mut [(Child::Empty, F::zero()); INLINE],
+                ray,
+                t_max,
+                visit,
+            );
         } else {
             self.traverse_wide(
-                start,
+                self.root,
                 &mut vec![(Child::Empty, F::zero()); need],
                 ray,
                 t_max,
                 visit,
             );
         }
+    }
+
+    /// The stack entries [`Bvh::traverse`] needs: each wide level stacks at most four
+    /// children, one of which is popped at once.
+    fn stack_size(&self) -> usize {
+        3 * self.wide_depth + 4
     }
 
     /// Whether `test(k)` is true for some leaf whose box the ray meets in `(0, t_max)`;

@@ -44,6 +44,8 @@ pub struct Streams<F> {
     octants: [Vec<Entry<F>>; 8],
     /// One for each level of the tree.
     levels: Vec<Level<F>>,
+    /// The stack of a ray searching a subtree alone.
+    stack: Vec<(Child, F)>,
 }
 
 /// Rays a node tests at once: a longer list is taken in chunks of this many.
@@ -82,6 +84,7 @@ impl<F: Float> Bvh<F> {
             prepared,
             octants,
             levels,
+            stack,
         } = streams;
         prepared.clear();
         octants.iter_mut().for_each(Vec::clear);
@@ -108,10 +111,12 @@ impl<F: Float> Bvh<F> {
             return;
         };
         levels.resize_with(levels.len().max(self.wide_depth + 1), Default::default);
+        stack.resize(stack.len().max(self.stack_size()), (Child::Empty, F::zero()));
         let mut walk = Walk {
             bvh: self,
             rays,
             prepared,
+            stack,
             t_max,
             leaf: &mut leaf,
         };
@@ -128,6 +133,7 @@ struct Walk<'w, F, L> {
     bvh: &'w Bvh<F>,
     rays: &'w [Ray<F>],
     prepared: &'w [Prepared<F>],
+    stack: &'w mut [(Child, F)],
     t_max: &'w mut [F],
     leaf: &'w mut L,
 }
@@ -148,8 +154,9 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
                     continue;
                 }
                 let (leaf, t_max) = (&mut *self.leaf, &mut *self.t_max);
+                let start = Some(Child::Node(i));
                 self.bvh
-                    .traverse_from(Some(Child::Node(i)), &self.rays[ri], t_max[ri], |k, _| {
+                    .traverse_wide(start, self.stack, &self.rays[ri], t_max[ri], |k, _| {
                         leaf(k, &[(r, F::zero())], t_max);
                         Some(t_max[ri])
                     });
