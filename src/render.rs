@@ -157,7 +157,7 @@ where
 }
 
 /// Rows rendered together as one batch of paths ([`wavefront`]).
-const BAND_ROWS: usize = 4;
+const BAND_ROWS: usize = 2;
 
 /// A progress bar on stderr (work done, rate, time left), hidden unless asked for and
 /// stderr is a terminal.

@@ -36,39 +36,38 @@ const NONE: u32 = u32::MAX;
 pub(crate) struct Nearests<F> {
     t: Vec<F>,
     id: Vec<u32>,
-    /// The record of another shape's hit, with its object.
-    other: Vec<Option<(u32, Hit<F>)>>,
+    /// For a ray whose nearest hit is another shape's, the bound it was found with:
+    /// the same query again gives the same record.
+    bound: Vec<F>,
     streams: Streams<F>,
 }
 
 impl<F: Float> Nearests<F> {
-    /// Nothing found yet for `n` rays; records are kept only if `others`.
+    /// Nothing found yet for `n` rays; bounds are kept only if `others`.
     fn reset(&mut self, n: usize, others: bool) {
         self.t.clear();
         self.t.resize(n, F::infinity());
         self.id.clear();
         self.id.resize(n, NONE);
-        self.other.clear();
+        self.bound.clear();
         if others {
-            self.other.resize(n, None);
+            self.bound.resize(n, F::zero());
         }
     }
 
-    /// Ray `i`'s nearest hit so far, as [`Nearest`]: the record of another shape is
-    /// handed over.
-    fn take(&mut self, i: usize) -> Nearest<F> {
+    /// Ray `i`'s nearest hit so far, as [`Nearest`] (its record still to be made).
+    fn take(&self, i: usize) -> Nearest<F> {
         let (t, id) = (self.t[i], self.id[i]);
-        let found = match self.other.get_mut(i).and_then(Option::take) {
-            // (Unless a sphere of the tree has won since.)
-            Some((other, hit)) if other == id => Found::Other(hit),
-            _ if id == NONE => Found::Nothing,
-            _ => Found::Sphere,
-        };
         Nearest {
             t,
             id: if id == NONE { 0 } else { id },
-            found,
+            found: if id == NONE { Found::Nothing } else { Found::Sphere },
         }
+    }
+
+    /// The bound to query ray `i`'s nearest object with again, if it is not a sphere.
+    fn bound(&self, i: usize, t: F) -> F {
+        self.bound.get(i).copied().unwrap_or_else(|| t.next_up())
     }
 }
 
@@ -349,7 +348,8 @@ impl<F: Float> Index<F> {
                 }),
             }
         }
-        Self::record(objects, ray, best)
+        let bound = best.t.next_up();
+        Self::record(objects, ray, best, bound)
     }
 
     /// [`Index::hit`] with no bound for each of `rays`, handed to `each(i, hit)` in the
@@ -391,7 +391,7 @@ impl<F: Float> Index<F> {
         }
         for &other in g.others {
             let rays = rays.iter().zip(ts.iter_mut()).zip(ids.iter_mut());
-            for (((ray, t), id), record) in rays.zip(near.other.iter_mut()) {
+            for (((ray, t), id), found_with) in rays.zip(near.bound.iter_mut()) {
                 let bound = if *id != NONE && other < *id {
                     t.next_up()
                 } else {
@@ -400,7 +400,7 @@ impl<F: Float> Index<F> {
                 if let Some(hit) = objects[other as usize].shape.hit(ray, bound)
                     && (hit.t < *t || (hit.t == *t && other < *id))
                 {
-                    (*t, *id, *record) = (hit.t, other, Some((other, hit)));
+                    (*t, *id, *found_with) = (hit.t, other, bound);
                 }
             }
         }
@@ -442,29 +442,30 @@ impl<F: Float> Index<F> {
                     }),
                 }
             }
-            each(
-                i,
-                Self::record(objects, ray, best).map(|(hit, object)| (hit, &object.material)),
-            );
+            let bound = near.bound(i, best.t);
+            let hit = Self::record(objects, ray, best, bound);
+            each(i, hit.map(|(hit, object)| (hit, &object.material)));
         }
     }
 
-    /// The record of the nearest hit `best` found for `ray`, and the object hit.
+    /// The record of the nearest hit `best` found for `ray`, and the object hit. A shape
+    /// that is not a sphere and whose record is not held is queried again with `bound`.
     #[inline(always)]
     fn record<'a, S: Hittable<F>, M>(
         objects: &'a [Object<S, M>],
         ray: &Ray<F>,
         best: Nearest<F>,
+        bound: F,
     ) -> Option<(Hit<F>, &'a Object<S, M>)> {
         let object = objects.get(best.id as usize)?;
         let hit = match best.found {
             Found::Nothing => return None,
             Found::Other(hit) => hit,
-            // Only the nearest sphere's record is made. (`as_sphere` answered when the
-            // packet was built; the fallback recomputes the same hit.)
+            // Only the nearest sphere's record is made. (A shape that is not a sphere
+            // answers the query it answered before.)
             Found::Sphere => match object.shape.as_sphere() {
                 Some(s) => s.hit_at(ray, best.t),
-                None => object.shape.hit(ray, best.t.next_up())?,
+                None => object.shape.hit(ray, bound)?,
             },
         };
         Some((hit, object))
