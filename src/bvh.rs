@@ -1,5 +1,6 @@
 //! A bounding volume hierarchy: binned surface-area-heuristic build, flat array layout,
-//! ordered stack traversal. It only indexes primitives by their boxes and groups them into
+//! ordered stack traversal of one ray ([`Bvh::traverse`]) or of a whole batch at once
+//! ([`Bvh::traverse_all`]). It only indexes primitives by their boxes and groups them into
 //! leaves; the scene owns the primitives, lays out each leaf's as it likes, and tests a
 //! whole leaf in the traversal's callback.
 

@@ -1,4 +1,6 @@
-//! Rendering: the recursive [`trace`](Tracer::trace), the per-pixel sample loop, and the
+//! Rendering: the recursive [`trace`](Tracer::trace), the specification's formulation of a
+//! path; the breadth-first form the drivers run, which advances the paths of two rows at a
+//! time bounce by bounce and gives the recursion's image bit for bit (`wavefront`); and the
 //! parallel, deterministic drivers [`render`] and [`render_tile`].
 
 mod seed;
@@ -156,7 +158,9 @@ where
     })
 }
 
-/// Rows rendered together as one batch of paths ([`wavefront`]).
+/// Rows rendered together as one batch of paths ([`wavefront`]). Bands of one or two rows
+/// ran `four_mirrors` about 2 % faster than bands of four (the batch's rays stay in the
+/// first-level cache), `random_spheres` the same.
 const BAND_ROWS: usize = 2;
 
 /// A progress bar on stderr (work done, rate, time left), hidden unless asked for and

@@ -58,14 +58,13 @@ pub enum Acceleration {
 impl Acceleration {
     /// The bounded-object count from which [`Acceleration::Auto`] builds a BVH.
     ///
-    /// Measured by the `render` bench (`bvh-threshold`, one thread, 160×80, 2 spp, f32):
-    /// with spheres tested four at a time the plain loop is faster up to 16 random small
-    /// spheres (1.74 against 1.83 ms at 16) and the BVH from 20 (1.68 against 1.97 ms;
-    /// 2.5 against 3.7 ms at 64). On the spec's scenes the loop wins outright
-    /// (`bvh-or-loop-spec-scenes`: `four_mirrors` 2.4 against 2.9 ms, `matte_spheres`
-    /// 3.3 against 3.8 ms, with the floor tested in the loop either way), so they pay
-    /// nothing for a hierarchy.
-    pub const AUTO_THRESHOLD: usize = 20;
+    /// Measured by the `render` bench (`bvh-threshold`, one thread, 160×80, 2 spp, f32,
+    /// rows rendered as batches): the plain loop is faster up to 12 random small spheres
+    /// (1.44 against 1.51 ms) and the BVH from 16 (1.43 against 1.77 ms; 2.7 against
+    /// 4.4 ms at 64). On the spec's scenes the loop wins (`bvh-or-loop-spec-scenes`:
+    /// `four_mirrors` 2.47 against 2.96 ms, `matte_spheres` 3.53 against 3.69 ms, with the
+    /// floor tested in the loop either way), so they pay nothing for a hierarchy.
+    pub const AUTO_THRESHOLD: usize = 16;
 }
 
 /// The fast path: shapes and materials are enums, stored inline.
