@@ -31,7 +31,8 @@ struct Lists<F> {
 const NONE: u32 = u32::MAX;
 
 /// Each ray's nearest hit so far in a batch ([`Index::hit_all`]): `t`, the object `id`
-/// (or [`NONE`]), and the record if it is not a sphere's; kept from batch to batch.
+/// (or [`NONE`]), and for another shape than a sphere the bound it was found with; kept
+/// from batch to batch, with the stream traversal's buffers.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Nearests<F> {
     t: Vec<F>,
@@ -353,10 +354,11 @@ impl<F: Float> Index<F> {
     }
 
     /// [`Index::hit`] with no bound for each of `rays`, handed to `each(i, hit)` in the
-    /// rays' order, `near` holding each
-    /// ray's nearest `t` and object so far: the loop group's objects are tested one object
-    /// over all the rays at a time (independent iterations the processor overlaps, where
-    /// one ray's tests would wait on each other), then each ray searches the BVH.
+    /// rays' order (`near` holds each ray's nearest `t` and object so far). The loop
+    /// group's objects are tested one object over all the rays at a time (independent
+    /// iterations the processor overlaps, where one ray's tests would wait on each other);
+    /// then a tree of packets is walked by the whole batch at once, another tree by each
+    /// ray alone.
     #[inline]
     pub(super) fn hit_all<'a, S: Hittable<F>, M>(
         &self,
@@ -370,13 +372,8 @@ impl<F: Float> Index<F> {
         let (ts, ids) = (&mut near.t, &mut near.id);
         for p in g.packets {
             for ((ray, t), id) in rays.iter().zip(ts.iter_mut()).zip(ids.iter_mut()) {
-                let hits = p.spheres.hits(ray);
-                let nearest = hits.min_lane();
-                if nearest < F::infinity() && nearest <= *t {
-                    let lane = p.ids[hits.mask_eq(nearest).trailing_zeros() as usize];
-                    if nearest < *t || lane < *id {
-                        (*t, *id) = (nearest, lane);
-                    }
+                if let Some(nearer) = Self::beats(p, ray, *t, *id) {
+                    (*t, *id) = nearer;
                 }
             }
         }
@@ -415,13 +412,8 @@ impl<F: Float> Index<F> {
                         if entry > ts[r] {
                             continue;
                         }
-                        let hits = p.spheres.hits(&rays[r]);
-                        let nearest = hits.min_lane();
-                        if nearest < F::infinity() && nearest <= ts[r] {
-                            let lane = p.ids[hits.mask_eq(nearest).trailing_zeros() as usize];
-                            if nearest < ts[r] || lane < ids[r] {
-                                (ts[r], ids[r]) = (nearest, lane);
-                            }
+                        if let Some(nearer) = Self::beats(p, &rays[r], ts[r], ids[r]) {
+                            (ts[r], ids[r]) = nearer;
                         }
                     }
                 });
@@ -474,18 +466,28 @@ impl<F: Float> Index<F> {
     /// Updates `best` with packet `p`; whether it changed.
     #[inline(always)]
     fn nearest_in_packet(p: &Packet<F>, ray: &Ray<F>, best: &mut Nearest<F>) -> bool {
-        let t = p.spheres.hits(ray);
-        let nearest = t.min_lane();
+        let Some((t, id)) = Self::beats(p, ray, best.t, best.id) else {
+            return false;
+        };
+        (best.t, best.id, best.found) = (t, id, Found::Sphere);
+        true
+    }
+
+    /// Packet `p`'s nearest hit of `ray` and its object, if it is nearer than `t`, or as
+    /// near and of an object before `id`.
+    #[inline(always)]
+    fn beats(p: &Packet<F>, ray: &Ray<F>, t: F, id: u32) -> Option<(F, u32)> {
+        let hits = p.spheres.hits(ray);
+        let nearest = hits.min_lane();
         // Most packets hold nothing nearer. Lanes follow the objects' order, so of
         // equally near lanes the first is the packet's answer.
-        if nearest < F::infinity() && nearest <= best.t {
-            let id = p.ids[t.mask_eq(nearest).trailing_zeros() as usize];
-            if best.beaten_by(nearest, id) {
-                (best.t, best.id, best.found) = (nearest, id, Found::Sphere);
-                return true;
+        if nearest < F::infinity() && nearest <= t {
+            let lane = p.ids[hits.mask_eq(nearest).trailing_zeros() as usize];
+            if nearest < t || lane < id {
+                return Some((nearest, lane));
             }
         }
-        false
+        None
     }
 
     /// Updates `best` with the objects of group `g`; whether it changed.
