@@ -14,7 +14,7 @@
 //! starts beyond that `t`, as in [`Bvh::traverse`].
 
 use super::Bvh;
-use super::wide::{Child, Wide};
+use super::wide::Child;
 use crate::float::Float;
 use crate::lanes::F4;
 use crate::ray::Ray;
@@ -164,6 +164,7 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
             return;
         }
         let n = &self.bvh.wide[i as usize];
+        let (near, far) = n.faces(octant);
         let (here, deeper) = levels.split_first_mut().expect("levels cover the tree's depth");
         for chunk in list.chunks(CHUNK) {
             // Each ray is written to all four children's lists and kept (its list's count
@@ -172,7 +173,7 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
             let mut counts = [0usize; 4];
             for &(r, entry) in chunk {
                 let reach = self.t_max[r as usize];
-                let (t, entered) = entries(n, &self.prepared[r as usize], octant, reach);
+                let (t, entered) = entries(&near, &far, &self.prepared[r as usize], reach);
                 let entered = if entry <= reach { entered } else { 0 };
                 let lanes = here.children.iter_mut().zip(&mut counts).zip(t.0);
                 for (lane, ((children, count), t)) in lanes.enumerate() {
@@ -196,23 +197,17 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
     }
 }
 
-/// The entry distance into each of the node's four boxes and the mask of those the ray
-/// meets in `(0, t_max]`: [`Bvh::traverse`]'s slab test, operation for operation, with
-/// each axis's near side picked by the stream's octant.
+/// The entry distance into each of a node's four boxes, given by their `near` and `far`
+/// faces along the ray's octant, and the mask of those the ray meets in `(0, t_max]`:
+/// [`Bvh::traverse`]'s slab test, operation for operation.
 #[inline(always)]
-fn entries<F: Float>(n: &Wide<F>, p: &Prepared<F>, octant: usize, t_max: F) -> (F4<F>, u32) {
+fn entries<F: Float>(near: &[F4<F>; 3], far: &[F4<F>; 3], p: &Prepared<F>, t_max: F) -> (F4<F>, u32) {
     let mut t0 = F4::splat(F::zero());
     let mut t1 = F4::splat(t_max);
     for axis in 0..3 {
-        let (lo, hi) = n.bounds(axis);
-        let (near, far) = if octant & (1 << axis) != 0 {
-            (hi, lo)
-        } else {
-            (lo, hi)
-        };
         let o = F4::splat(p.origin[axis]);
-        let t_near = (near - o) * F4::splat(p.inv_d[axis]);
-        let t_far = (far - o) * F4::splat(p.inv_far[axis]);
+        let t_near = (near[axis] - o) * F4::splat(p.inv_d[axis]);
+        let t_far = (far[axis] - o) * F4::splat(p.inv_far[axis]);
         t0 = F4::select_lt(t0, t_near, t_near, t0);
         t1 = F4::select_lt(t_far, t1, t_far, t1);
     }

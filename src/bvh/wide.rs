@@ -27,10 +27,17 @@ pub(super) struct Wide<F> {
 }
 
 impl<F: Float> Wide<F> {
-    /// The four children's boxes along `axis`: `(lo, hi)`.
+    /// The four boxes' faces as a ray of direction octant `octant` (bit `a` set where
+    /// the direction's axis `a` is negative) meets them, per axis: `(near, far)`.
     #[inline(always)]
-    pub(super) fn bounds(&self, axis: usize) -> (F4<F>, F4<F>) {
-        (self.lo[axis], self.hi[axis])
+    pub(super) fn faces(&self, octant: usize) -> ([F4<F>; 3], [F4<F>; 3]) {
+        let (mut near, mut far) = (self.lo, self.hi);
+        for axis in 0..3 {
+            if octant & (1 << axis) != 0 {
+                (near[axis], far[axis]) = (self.hi[axis], self.lo[axis]);
+            }
+        }
+        (near, far)
     }
 
     /// What lane `lane` points to.
