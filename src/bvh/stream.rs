@@ -170,20 +170,21 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
             // Each ray is written to all four children's lists and kept (its list's count
             // moved on) where it enters; the indices are masked to the lists' fixed size,
             // so there is no bounds check either.
-            let mut counts = [0usize; 4];
+            let mut counts = [0u32; 4];
             for &(r, entry) in chunk {
                 let reach = self.t_max[r as usize];
-                let (t, entered) = entries(&near, &far, &self.prepared[r as usize], reach);
-                let entered = if entry <= reach { entered } else { 0 };
-                let lanes = here.children.iter_mut().zip(&mut counts).zip(t.0);
-                for (lane, ((children, count), t)) in lanes.enumerate() {
-                    children[*count & (CHUNK - 1)] = (r, t);
-                    *count += (entered >> lane) as usize & 1;
+                let (t0, t1) = entries(&near, &far, &self.prepared[r as usize], reach);
+                let alive = entry <= reach;
+                for lane in 0..4 {
+                    here.children[lane][counts[lane] as usize & (CHUNK - 1)] = (r, t0.0[lane]);
+                    // One comparison per lane added to its count, not a bit mask: the
+                    // counts stay one vector, where a mask's bits are pulled out one by one.
+                    counts[lane] += u32::from(alive & (t0.0[lane] <= t1.0[lane]));
                 }
             }
             for &lane in &self.bvh.orders[i as usize][octant] {
                 let lane = lane as usize;
-                let children = &here.children[lane][..counts[lane]];
+                let children = &here.children[lane][..counts[lane] as usize];
                 if children.is_empty() {
                     continue;
                 }
@@ -197,11 +198,12 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
     }
 }
 
-/// The entry distance into each of a node's four boxes, given by their `near` and `far`
-/// faces along the ray's octant, and the mask of those the ray meets in `(0, t_max]`:
-/// [`Bvh::traverse`]'s slab test, operation for operation.
+/// The entry and exit distances `(t0, t1)` of the ray through each of a node's four
+/// boxes, given by their `near` and `far` faces along the ray's octant, clipped to
+/// `(0, t_max]`; the ray meets a box where `t0 <= t1`. [`Bvh::traverse`]'s slab test,
+/// operation for operation.
 #[inline(always)]
-fn entries<F: Float>(near: &[F4<F>; 3], far: &[F4<F>; 3], p: &Prepared<F>, t_max: F) -> (F4<F>, u32) {
+fn entries<F: Float>(near: &[F4<F>; 3], far: &[F4<F>; 3], p: &Prepared<F>, t_max: F) -> (F4<F>, F4<F>) {
     let mut t0 = F4::splat(F::zero());
     let mut t1 = F4::splat(t_max);
     for axis in 0..3 {
@@ -211,5 +213,5 @@ fn entries<F: Float>(near: &[F4<F>; 3], far: &[F4<F>; 3], p: &Prepared<F>, t_max
         t0 = F4::select_lt(t0, t_near, t_near, t0);
         t1 = F4::select_lt(t_far, t1, t_far, t1);
     }
-    (t0, F4::mask_le(t0, t1))
+    (t0, t1)
 }
