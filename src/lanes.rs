@@ -68,12 +68,20 @@ impl<F: Float> F4<F> {
         if cd < ab { cd } else { ab }
     }
 
-    /// Bit `k` set where `test(k)` holds. One mask from a whole per-lane condition
-    /// compiles to one compare-and-mask sequence; or-ing masks made separately does not
-    /// (LLVM rebuilds each mask's bits one by one).
+    /// Whether `test(k)` holds in all four lanes. Written as one `&` of the four lane
+    /// tests, which the compiler turns into one vector comparison and one test of its
+    /// mask on any target. (A bit mask compared with `0b1111` does too with SSE, but with
+    /// AVX-512 LLVM pulls the mask's bits out one by one.)
     #[inline(always)]
-    pub fn mask_where(test: impl Fn(usize) -> bool) -> u32 {
-        u32::from(test(0)) | u32::from(test(1)) << 1 | u32::from(test(2)) << 2 | u32::from(test(3)) << 3
+    pub fn all(test: impl Fn(usize) -> bool) -> bool {
+        test(0) & test(1) & test(2) & test(3)
+    }
+
+    /// Whether some lane is `< bound` (see [`F4::all`] for the form).
+    #[inline(always)]
+    pub fn any_lt(self, bound: F) -> bool {
+        let [a, b, c, d] = self.0;
+        (a < bound) | (b < bound) | (c < bound) | (d < bound)
     }
 
     /// Bit `k` set where lane `k` is `== v`.
@@ -88,13 +96,6 @@ impl<F: Float> F4<F> {
     pub fn mask_le(a: Self, b: Self) -> u32 {
         let m = |k: usize| u32::from(a.0[k] <= b.0[k]) << k;
         m(0) | m(1) | m(2) | m(3)
-    }
-
-    /// Bit `k` set where lane `k` is `< bound`.
-    #[inline(always)]
-    pub fn mask_lt(self, bound: F) -> u32 {
-        let [a, b, c, d] = self.0.map(|x| u32::from(x < bound));
-        a | (b << 1) | (c << 2) | (d << 3)
     }
 }
 
@@ -152,8 +153,11 @@ mod tests {
         assert_eq!((-a).0[..3], [-1.0, 2.0, -4.0]);
         let s = F4::select_lt(a, b, F4::splat(1.0), F4::splat(0.0));
         assert_eq!(s.0, [1.0, 1.0, 0.0, 0.0], "NaN < 2 is false");
-        assert_eq!(a.mask_lt(2.0), 0b0011);
-        assert_eq!(F4::<f32>::mask_where(|k| a.0[k] > 0.0 || a.0[k].is_nan()), 0b1101);
+        assert!(a.any_lt(-1.0) && !a.any_lt(-2.0), "NaN < x is false");
+        assert!(F4::<f32>::all(|k| a.0[k] < 5.0 || a.0[k].is_nan()));
+        assert!(!F4::<f32>::all(|k| a.0[k] < 4.0));
+        assert_eq!(F4([1.0f32, 3.0, 2.0, 3.0]).mask_eq(3.0), 0b1010);
+        assert_eq!(F4::mask_le(a, b), 0b0011, "NaN <= x is false");
         assert_eq!(a.min_lane(), -2.0);
         assert_eq!(F4([5.0f64, 3.0, 4.0, 3.0]).min_lane(), 3.0);
         assert!(F4([-1.0f64, 4.0, 0.0, 9.0]).sqrt().0[0].is_nan());

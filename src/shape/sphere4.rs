@@ -71,7 +71,7 @@ impl<F: Float> Sphere4<F> {
             let o = F::zero();
             (disc.0[k] < o) | ((c.0[k] > o) & (b.0[k] > o))
         };
-        if F4::<F>::mask_where(miss) == 0b1111 {
+        if F4::<F>::all(miss) {
             return inf;
         }
         let sqrt_d = disc.sqrt();
@@ -88,7 +88,7 @@ impl<F: Float> Sphere4<F> {
     /// Whether any lane's sphere is hit at some `t` in `(0, t_max)`.
     #[inline(always)]
     pub fn any(&self, ray: &Ray<F>, t_max: F) -> bool {
-        self.hits(ray).mask_lt(t_max) != 0
+        self.hits(ray).any_lt(t_max)
     }
 }
 
