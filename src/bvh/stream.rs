@@ -175,11 +175,16 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
                 let reach = self.t_max[r as usize];
                 let (t0, t1) = entries(&near, &far, &self.prepared[r as usize], reach);
                 let alive = entry <= reach;
-                for lane in 0..4 {
-                    here.children[lane][counts[lane] as usize & (CHUNK - 1)] = (r, t0.0[lane]);
+                let lanes = here
+                    .children
+                    .iter_mut()
+                    .zip(&mut counts)
+                    .zip(t0.0.into_iter().zip(t1.0));
+                for ((children, count), (t0, t1)) in lanes {
+                    children[*count as usize & (CHUNK - 1)] = (r, t0);
                     // One comparison per lane added to its count, not a bit mask: the
                     // counts stay one vector, where a mask's bits are pulled out one by one.
-                    counts[lane] += u32::from(alive & (t0.0[lane] <= t1.0[lane]));
+                    *count += u32::from(alive & (t0 <= t1));
                 }
             }
             for &lane in &self.bvh.orders[i as usize][octant] {
