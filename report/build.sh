@@ -15,7 +15,7 @@
 #   precision.csv, precision_time_vs_error.svg, convergence.csv, convergence.svg, precision.txt
 #       the accuracy study (cargo run --release --example precision);
 #   build-info.csv
-#       the machine, compiler and commit the figures were made with.
+#       the machine, compiler, build flags and commit the figures were made with.
 # (figures/dispatch.csv holds criterion results recorded by hand: see the report, §4.2.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -112,6 +112,8 @@ PY
         echo "cpu,\"$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //' || echo unknown)\""
         echo "cores,$(nproc 2>/dev/null || echo unknown)"
         echo "rustc,\"$(rustc --version)\""
+        # The flags of the builds: RUSTFLAGS if set, else .cargo/config.toml's.
+        echo "rustflags,\"${RUSTFLAGS:-$(sed -n 's/^rustflags = \[\(.*\)\]/\1/p' .cargo/config.toml | tr -d '",')}\""
         echo "commit,$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src examples 2>/dev/null || echo ' (with uncommitted changes)')"
         echo "date,$(date -u +%Y-%m-%d)"
     } >"$FIG/build-info.csv"
