@@ -10,9 +10,9 @@
 //! - each pixel keeps its own generator and draws in the same order as the recursion
 //!   (pair `k`'s two jitters, then at every bounce the first path's draws before the
 //!   second's, then pair `k + 1`), so interleaving pixels changes no draw;
-//! - each path logs its bounces' `(direct, attenuation)` and folds them back from the
-//!   last, `c ← saturate(direct + attenuation ∘ c)`, the recursion's own arithmetic in its
-//!   own order.
+//! - each bounce's `(direct, attenuation)` is logged, and once every path has ended the
+//!   logs are folded back from the last bounce, `c ← saturate(direct + attenuation ∘ c)`,
+//!   the recursion's own arithmetic in its own order for each path.
 
 use super::trace::{Step, Tracer, saturate};
 use crate::camera::Camera;
@@ -23,6 +23,10 @@ use crate::scene::Nearests;
 use crate::shape::Hittable;
 use crate::vec3::Color;
 use rand::Rng;
+
+/// A bounce a path went on from: its slot, the direct light and the attenuation that
+/// combine with the colour the next ray brings back.
+type Bounce<F> = (u32, Color<F>, Color<F>);
 
 /// The buffers of one row's paths, kept from row to row.
 pub(super) struct Row<F, R> {
@@ -38,8 +42,8 @@ pub(super) struct Row<F, R> {
     next_rays: Vec<Ray<F>>,
     next_slots: Vec<u32>,
     near: Nearests<F>,
-    /// Each path's bounces so far, `(direct, attenuation)`.
-    logs: Vec<Vec<(Color<F>, Color<F>)>>,
+    /// For each bounce, the paths that went on from it, in the rays' order.
+    logs: Vec<Vec<Bounce<F>>>,
     /// Each path's colour where it ended (background, black, or its last direct light).
     ends: Vec<Color<F>>,
 }
@@ -135,8 +139,6 @@ impl<F: Float, R: Rng> Row<F, R> {
                 self.slots.push((i * paths + j) as u32);
             }
         }
-        self.logs.resize_with(slots.max(self.logs.len()), Vec::new);
-        self.logs[..slots].iter_mut().for_each(Vec::clear);
         self.ends.clear();
         self.ends.resize(slots, Color::zero());
     }
@@ -152,6 +154,11 @@ impl<F: Float, R: Rng> Row<F, R> {
         let scene = tracer.scene;
         let mut depth = 0;
         while !self.rays.is_empty() {
+            if self.logs.len() == depth {
+                self.logs.push(Vec::new());
+            }
+            let log = &mut self.logs[depth];
+            log.clear();
             tracer.rays += self.rays.len() as u64;
             self.next_rays.clear();
             self.next_slots.clear();
@@ -160,10 +167,10 @@ impl<F: Float, R: Rng> Row<F, R> {
             scene.hit_all(rays, &mut self.near, |i, hit| {
                 let slot = slots[i];
                 let rng = &mut self.rngs[(slot >> shift) as usize];
-                match tracer.shade(&rays[i], hit, depth, rng) {
+                match tracer.shade(&rays[i], hit, depth as u32, rng) {
                     Step::Done(colour) => self.ends[slot as usize] = colour,
                     Step::Go(next, direct, attenuation) => {
-                        self.logs[slot as usize].push((direct, attenuation));
+                        log.push((slot, direct, attenuation));
                         self.next_rays.push(next);
                         self.next_slots.push(slot);
                     }
@@ -173,10 +180,13 @@ impl<F: Float, R: Rng> Row<F, R> {
             std::mem::swap(&mut self.slots, &mut self.next_slots);
             depth += 1;
         }
-        for (end, log) in self.ends.iter_mut().zip(&self.logs) {
-            *end = log.iter().rev().fold(*end, |c, &(direct, attenuation)| {
-                saturate(direct + attenuation * c)
-            });
+        // Each path's bounces fold back from its last: bounce by bounce from the deepest,
+        // each entry updating its path's colour.
+        for log in self.logs[..depth].iter().rev() {
+            for &(slot, direct, attenuation) in log {
+                let end = &mut self.ends[slot as usize];
+                *end = saturate(direct + attenuation * *end);
+            }
         }
     }
 }
