@@ -143,9 +143,9 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
     /// walks its children near to far along the octant with the rays entering each.
     ///
     /// No branch depends on a ray: a ray out of reach is tested anyway and enters
-    /// nothing, and each child's rays are gathered by writing every ray and counting
-    /// only those whose mask bit is set. (Branching on each ray's mask bits mispredicts
-    /// about half of them.)
+    /// nothing, and each child's rays are gathered by writing every ray to its list and
+    /// counting only those whose lane's comparison holds. (Branching on each ray's lanes
+    /// mispredicts about half of them.)
     fn node(&mut self, i: u32, list: &[Entry<F>], octant: usize, levels: &mut [Level<F>]) {
         if list.len() <= ALONE {
             for &(r, entry) in list {
