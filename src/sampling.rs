@@ -7,12 +7,21 @@
 
 use crate::float::{Float, lit};
 use crate::vec3::Vec3;
-use rand::{Rng, RngExt};
+use rand::Rng;
 
-/// A uniform `f64` in `[0, 1)` (53 random bits).
+/// A uniform `f64` in `[0, 1)`: 53 random bits `k`, `k·2⁻⁵³` (exact), as `rand`'s
+/// `random::<f64>()` draws it.
 #[inline]
 pub fn uniform<R: Rng + ?Sized>(rng: &mut R) -> f64 {
-    rng.random::<f64>()
+    (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+}
+
+/// `2u − 1` for `u` the next [`uniform`], a uniform `f64` in `[−1, 1)`: `k·2⁻⁵² − 1`. The
+/// same value bit for bit as `2.0 * uniform(rng) - 1.0` (both `k·2⁻⁵³` and its double are
+/// exact, so only the subtraction rounds, the same way), one operation fewer.
+#[inline]
+fn signed_uniform<R: Rng + ?Sized>(rng: &mut R) -> f64 {
+    (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 52) as f64) - 1.0
 }
 
 /// The specification's uniform point on the unit sphere: draw `X` with each coordinate
@@ -27,9 +36,9 @@ pub fn uniform<R: Rng + ?Sized>(rng: &mut R) -> f64 {
 /// Computed in `f64`; the result is unit length within `2.5·2⁻⁵²` (first-order bound `2.25·2⁻⁵²`) and exactly reproducible.
 pub fn unit_sphere_rejection<R: Rng + ?Sized>(rng: &mut R) -> [f64; 3] {
     loop {
-        let x = 2.0 * uniform(rng) - 1.0;
-        let y = 2.0 * uniform(rng) - 1.0;
-        let z = 2.0 * uniform(rng) - 1.0;
+        let x = signed_uniform(rng);
+        let y = signed_uniform(rng);
+        let z = signed_uniform(rng);
         let len2 = x * x + y * y + z * z;
         if len2 <= 1.0 && len2 > 1e-12 {
             let inv = 1.0 / len2.sqrt();
@@ -101,8 +110,21 @@ pub fn pixel_jitter<R: Rng + ?Sized>(rng: &mut R) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rand::SeedableRng;
     use rand::rngs::Xoshiro256PlusPlus;
+    use rand::{RngExt, SeedableRng};
+
+    /// `uniform` is `rand`'s `f64`, and `signed_uniform` is `2u − 1` of it, bit for bit.
+    #[test]
+    fn uniform_draws_are_rands_own() {
+        let mut a = Xoshiro256PlusPlus::seed_from_u64(1);
+        let mut b = a.clone();
+        let mut c = a.clone();
+        for _ in 0..100_000 {
+            let want = b.random::<f64>();
+            assert_eq!(uniform(&mut a).to_bits(), want.to_bits());
+            assert_eq!(signed_uniform(&mut c).to_bits(), (2.0 * want - 1.0).to_bits());
+        }
+    }
 
     #[test]
     fn rejection_points_are_unit() {

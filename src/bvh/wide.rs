@@ -18,26 +18,27 @@ pub(super) enum Child {
     Leaf(u32),
 }
 
-/// Four children's boxes, one [`F4`] per axis and side: `lo[axis].0[lane]`, `hi[axis].0[lane]`.
+/// Four children's boxes, one [`F4`] per side and axis: `sides[0][axis].0[lane]` is the
+/// low face, `sides[1][axis].0[lane]` the high one.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Wide<F> {
-    lo: [F4<F>; 3],
-    hi: [F4<F>; 3],
+    sides: [[F4<F>; 3]; 2],
     child: [Child; 4],
 }
 
 impl<F: Float> Wide<F> {
     /// The four boxes' faces as a ray of direction octant `octant` (bit `a` set where
     /// the direction's axis `a` is negative) meets them, per axis: `(near, far)`.
+    ///
+    /// The sides are picked by index, not by branch: the octant changes from stream to
+    /// stream, and a branch on it mispredicted (cachegrind, `random_spheres`).
     #[inline(always)]
     pub(super) fn faces(&self, octant: usize) -> ([F4<F>; 3], [F4<F>; 3]) {
-        let (mut near, mut far) = (self.lo, self.hi);
-        for axis in 0..3 {
-            if octant & (1 << axis) != 0 {
-                (near[axis], far[axis]) = (self.hi[axis], self.lo[axis]);
-            }
-        }
-        (near, far)
+        let side = |axis: usize| (octant >> axis) & 1;
+        (
+            std::array::from_fn(|axis| self.sides[side(axis)][axis]),
+            std::array::from_fn(|axis| self.sides[side(axis) ^ 1][axis]),
+        )
     }
 
     /// What lane `lane` points to.
@@ -57,7 +58,7 @@ impl<F: Float> Wide<F> {
                 }
                 (0..3)
                     .map(|axis| {
-                        let centre = (self.lo[axis].0[lane] + self.hi[axis].0[lane]).to_f64();
+                        let centre = (self.sides[0][axis].0[lane] + self.sides[1][axis].0[lane]).to_f64();
                         if octant & (1 << axis) != 0 {
                             -centre
                         } else {
@@ -99,8 +100,7 @@ pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wid
     }
     let me = out.len();
     let empty = Wide {
-        lo: [F4::splat(F::infinity()); 3],
-        hi: [F4::splat(F::neg_infinity()); 3],
+        sides: [[F4::splat(F::infinity()); 3], [F4::splat(F::neg_infinity()); 3]],
         child: [Child::Empty; 4],
     };
     out.push(empty);
@@ -108,8 +108,8 @@ pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wid
     for (lane, &i) in lanes.iter().enumerate() {
         let [lo, hi] = nodes[i].bounds;
         for axis in 0..3 {
-            node.lo[axis].0[lane] = lo[axis];
-            node.hi[axis].0[lane] = hi[axis];
+            node.sides[0][axis].0[lane] = lo[axis];
+            node.sides[1][axis].0[lane] = hi[axis];
         }
         node.child[lane] = if nodes[i].count > 0 {
             Child::Leaf(nodes[i].offset)
@@ -137,13 +137,14 @@ pub(super) fn depth<F>(wide: &[Wide<F>], root: Option<Child>) -> usize {
 }
 
 /// A ray prepared for the 4-wide slab test: origin and reciprocal direction in every
-/// lane, and the direction's signs, which pick each axis's near side once per ray.
+/// lane, and the direction's octant, which picks each axis's near side.
 struct WideRay<F> {
     origin: [F4<F>; 3],
     inv_d: [F4<F>; 3],
     /// `inv_d` grown for the far faces, as in [`crate::aabb::RayBoxTest`].
     inv_far: [F4<F>; 3],
-    neg: [bool; 3],
+    /// Bit `a` set where the direction's axis `a` is negative.
+    octant: usize,
 }
 
 impl<F: Float> WideRay<F> {
@@ -154,7 +155,7 @@ impl<F: Float> WideRay<F> {
             origin: [o.x, o.y, o.z].map(F4::splat),
             inv_d: inv.map(F4::splat),
             inv_far: inv.map(|i| F4::splat(i * crate::aabb::far_growth())),
-            neg: inv.map(|i| i < F::zero()),
+            octant: (0..3).map(|a| usize::from(inv[a] < F::zero()) << a).sum(),
         }
     }
 
@@ -164,17 +165,13 @@ impl<F: Float> WideRay<F> {
     /// there, which fails the comparisons and so constrains nothing.
     #[inline(always)]
     fn entries(&self, n: &Wide<F>, t_max: F) -> (F4<F>, u32) {
+        let (near, far) = n.faces(self.octant);
         let mut t0 = F4::splat(F::zero());
         let mut t1 = F4::splat(t_max);
         for axis in 0..3 {
-            let (near, far) = if self.neg[axis] {
-                (n.hi[axis], n.lo[axis])
-            } else {
-                (n.lo[axis], n.hi[axis])
-            };
             let o = self.origin[axis];
-            let t_near = (near - o) * self.inv_d[axis];
-            let t_far = (far - o) * self.inv_far[axis];
+            let t_near = (near[axis] - o) * self.inv_d[axis];
+            let t_far = (far[axis] - o) * self.inv_far[axis];
             t0 = F4::select_lt(t0, t_near, t_near, t0);
             t1 = F4::select_lt(t_far, t1, t_far, t1);
         }

@@ -349,8 +349,8 @@ impl<F: Float> Index<F> {
                 }),
             }
         }
-        let bound = best.t.next_up();
-        Self::record(objects, ray, best, bound)
+        let t = best.t;
+        Self::record(objects, ray, best, || t.next_up())
     }
 
     /// [`Index::hit`] with no bound for each of `rays`, handed to `each(i, hit)` in the
@@ -434,20 +434,21 @@ impl<F: Float> Index<F> {
                     }),
                 }
             }
-            let bound = near.bound(i, best.t);
-            let hit = Self::record(objects, ray, best, bound);
+            let t = best.t;
+            let hit = Self::record(objects, ray, best, || near.bound(i, t));
             each(i, hit.map(|(hit, object)| (hit, &object.material)));
         }
     }
 
     /// The record of the nearest hit `best` found for `ray`, and the object hit. A shape
-    /// that is not a sphere and whose record is not held is queried again with `bound`.
+    /// that is not a sphere and whose record is not held is queried again with `bound()`
+    /// (worked out only then: a sphere's record needs no bound).
     #[inline(always)]
     fn record<'a, S: Hittable<F>, M>(
         objects: &'a [Object<S, M>],
         ray: &Ray<F>,
         best: Nearest<F>,
-        bound: F,
+        bound: impl FnOnce() -> F,
     ) -> Option<(Hit<F>, &'a Object<S, M>)> {
         let object = objects.get(best.id as usize)?;
         let hit = match best.found {
@@ -457,7 +458,7 @@ impl<F: Float> Index<F> {
             // answers the query it answered before.)
             Found::Sphere => match object.shape.as_sphere() {
                 Some(s) => s.hit_at(ray, best.t),
-                None => object.shape.hit(ray, bound)?,
+                None => object.shape.hit(ray, bound())?,
             },
         };
         Some((hit, object))
