@@ -53,6 +53,17 @@ pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + '
         }
     }
 
+    /// [`step_toward`](Float::step_toward) on each of three components: `p[k]` stepped
+    /// toward `s[k]`'s sign.
+    #[inline]
+    fn step_toward_each(p: [Self; 3], s: [Self; 3]) -> [Self; 3] {
+        [
+            p[0].step_toward(s[0]),
+            p[1].step_toward(s[1]),
+            p[2].step_toward(s[2]),
+        ]
+    }
+
     /// pbrt's bound on the relative error of `n` successive roundings:
     /// `γ(n) = n·u / (1 − n·u)` with the unit roundoff `u = ε/2`.
     ///
@@ -70,6 +81,40 @@ pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + '
 #[inline]
 pub fn lit<F: Float>(x: f64) -> F {
     F::from_f64(x)
+}
+
+/// [`Float::step_toward`] on the bits of four values `b` and four sign sources `sb`,
+/// as signed integers of `$float`'s width `$int` (`i32` for `f32`, `i64` for `f64`),
+/// lane by lane with bitwise selects and no branch.
+///
+/// In sign-magnitude bits, a step towards `s` grows the magnitude (adds 1 to the bits)
+/// when the value and `s` have the same sign and shrinks it (subtracts 1) when not; from
+/// ±0 it goes to the smallest value of `s`'s sign. The step is taken where the value is
+/// finite (magnitude bits below those of ∞) and `s` is neither zero nor NaN (magnitude
+/// bits nonzero and at most those of ∞); elsewhere the value stays.
+///
+/// Each operation is one expression over the four lanes, as in [`crate::lanes`], so the
+/// compiler makes each one SIMD instruction: written as one expression per lane, it
+/// compiled to three scalar copies with a branch each. (No multiplication: a 32- or
+/// 64-bit integer product has no SSE2 instruction.)
+macro_rules! step_lanes {
+    ($float:ty, $int:ty, $b:expr, $sb:expr) => {{
+        #[inline(always)]
+        fn lanes(f: impl Fn(usize) -> $int) -> [$int; 4] {
+            [f(0), f(1), f(2), f(3)]
+        }
+        let (b, sb): ([$int; 4], [$int; 4]) = ($b, $sb);
+        let inf = <$float>::INFINITY.to_bits() as $int;
+        let mask = |c: bool| -<$int>::from(c);
+        let mag = lanes(|k| b[k] & <$int>::MAX);
+        let smag = lanes(|k| sb[k] & <$int>::MAX);
+        let stepped = lanes(|k| b[k].wrapping_add(((b[k] ^ sb[k]) >> (<$int>::BITS - 1)) | 1));
+        let from_zero = lanes(|k| (sb[k] & <$int>::MIN) | 1);
+        let at_zero = lanes(|k| mask(mag[k] == 0));
+        let moved = lanes(|k| (from_zero[k] & at_zero[k]) | (stepped[k] & !at_zero[k]));
+        let go = lanes(|k| mask((mag[k] < inf) & (smag[k] != 0) & (smag[k] <= inf)));
+        lanes(|k| (moved[k] & go[k]) | (b[k] & !go[k]))
+    }};
 }
 
 impl Float for f32 {
@@ -95,23 +140,26 @@ impl Float for f32 {
         f32::next_down(self)
     }
     /// Branch-free: the signs of hit points and offsets are random, so branches would
-    /// mispredict (this runs three times per spawned ray).
+    /// mispredict (see `step_lanes!`).
     #[inline]
     fn step_toward(self, s: Self) -> Self {
-        // In sign-magnitude bits, a step towards `s` grows the magnitude (adds 1 to the
-        // bits) when `self` and `s` have the same sign and shrinks it (subtracts 1) when
-        // not; from ±0 it goes to the smallest value of `s`'s sign. (No multiplication:
-        // vectorised, a 32- or 64-bit integer product has no SSE2 instruction.)
-        let (b, sb) = (self.to_bits() as i32, s.to_bits() as i32);
-        let stepped = b.wrapping_add(((b ^ sb) >> 31) | 1);
-        let from_zero = (sb & i32::MIN) | 1;
-        let moved = if b & i32::MAX == 0 { from_zero } else { stepped };
-        let bits = if (s > 0.0) | (s < 0.0) { moved } else { b };
-        if self.is_finite() {
-            f32::from_bits(bits as u32)
-        } else {
-            self
-        }
+        Self::step_toward_each([self; 3], [s; 3])[0]
+    }
+    /// The three steps as lanes of one vector: `step_lanes!` on four lanes (the fourth
+    /// idle), one sequence of SIMD integer operations (this runs once per spawned ray).
+    #[inline]
+    fn step_toward_each(p: [Self; 3], s: [Self; 3]) -> [Self; 3] {
+        let bits = |v: [f32; 3]| {
+            [
+                v[0].to_bits() as i32,
+                v[1].to_bits() as i32,
+                v[2].to_bits() as i32,
+                0,
+            ]
+        };
+        let (b, sb) = (bits(p), bits(s));
+        let r = step_lanes!(f32, i32, b, sb);
+        [r[0], r[1], r[2]].map(|r| f32::from_bits(r as u32))
     }
 }
 
@@ -137,24 +185,25 @@ impl Float for f64 {
     fn next_down(self) -> Self {
         f64::next_down(self)
     }
-    /// Branch-free: the signs of hit points and offsets are random, so branches would
-    /// mispredict (this runs three times per spawned ray).
+    /// Branch-free, as for `f32`.
     #[inline]
     fn step_toward(self, s: Self) -> Self {
-        // In sign-magnitude bits, a step towards `s` grows the magnitude (adds 1 to the
-        // bits) when `self` and `s` have the same sign and shrinks it (subtracts 1) when
-        // not; from ±0 it goes to the smallest value of `s`'s sign. (No multiplication:
-        // vectorised, a 32- or 64-bit integer product has no SSE2 instruction.)
-        let (b, sb) = (self.to_bits() as i64, s.to_bits() as i64);
-        let stepped = b.wrapping_add(((b ^ sb) >> 63) | 1);
-        let from_zero = (sb & i64::MIN) | 1;
-        let moved = if b & i64::MAX == 0 { from_zero } else { stepped };
-        let bits = if (s > 0.0) | (s < 0.0) { moved } else { b };
-        if self.is_finite() {
-            f64::from_bits(bits as u64)
-        } else {
-            self
-        }
+        Self::step_toward_each([self; 3], [s; 3])[0]
+    }
+    /// As for `f32`: four 64-bit lanes.
+    #[inline]
+    fn step_toward_each(p: [Self; 3], s: [Self; 3]) -> [Self; 3] {
+        let bits = |v: [f64; 3]| {
+            [
+                v[0].to_bits() as i64,
+                v[1].to_bits() as i64,
+                v[2].to_bits() as i64,
+                0,
+            ]
+        };
+        let (b, sb) = (bits(p), bits(s));
+        let r = step_lanes!(f64, i64, b, sb);
+        [r[0], r[1], r[2]].map(|r| f64::from_bits(r as u64))
     }
 }
 
@@ -249,6 +298,61 @@ mod tests {
             assert!(x.next_up() > x, "{}: next_up({x})", F::NAME);
             assert!(x.next_down() < x, "{}: next_down({x})", F::NAME);
         }
+    }
+
+    /// The three-lane steps agree with the definition (the branches of the trait's
+    /// default) on every value kind, infinities and NaN included, in any lane.
+    fn steps_each_as_defined<F: Float>() {
+        let values = [
+            0.0,
+            -0.0,
+            1.0,
+            -2.5,
+            1e-300,
+            -1e-40,
+            3e38,
+            f64::MAX,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ];
+        let defined = |x: F, s: F| {
+            if !x.is_finite() {
+                x
+            } else if s > F::zero() {
+                x.next_up()
+            } else if s < F::zero() {
+                x.next_down()
+            } else {
+                x
+            }
+        };
+        let bits = |v: F| v.to_f64().to_bits();
+        for (i, &x) in values.iter().enumerate() {
+            for (j, &s) in values.iter().enumerate() {
+                let (y, t) = (values[(i + 3) % values.len()], values[(j + 5) % values.len()]);
+                let p = [lit::<F>(x), lit(y), lit(-x)];
+                let d = [lit::<F>(s), lit(-s), lit(t)];
+                let got = F::step_toward_each(p, d);
+                for k in 0..3 {
+                    assert_eq!(
+                        bits(got[k]),
+                        bits(defined(p[k], d[k])),
+                        "{}: {:?} {:?}",
+                        F::NAME,
+                        p,
+                        d
+                    );
+                    assert_eq!(bits(p[k].step_toward(d[k])), bits(got[k]));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn steps_each_as_defined_f32_f64() {
+        steps_each_as_defined::<f32>();
+        steps_each_as_defined::<f64>();
     }
 
     /// The branch-free steps agree with `next_up`/`next_down` on every finite value kind.

@@ -74,11 +74,8 @@ pub fn offset_ray_origin<F: Float>(p: Vec3<F>, err: Vec3<F>, n: Vec3<F>, w: Vec3
     let d = n.abs().dot(err);
     let offset = if w.dot(n) < F::zero() { -(n * d) } else { n * d };
     let po = p + offset;
-    Vec3::new(
-        po.x.step_toward(offset.x),
-        po.y.step_toward(offset.y),
-        po.z.step_toward(offset.z),
-    )
+    let [x, y, z] = F::step_toward_each([po.x, po.y, po.z], [offset.x, offset.y, offset.z]);
+    Vec3::new(x, y, z)
 }
 
 /// A surface a ray can hit: the specification's abstract object.
