@@ -10,8 +10,8 @@
 //! its nearest hit so far has moved out of reach.
 //!
 //! The answer does not depend on the order: a leaf's hits update each ray's nearest
-//! `(t, object)` by the same rule whatever came first, and a box is skipped only when it
-//! starts beyond that `t`, as in [`Bvh::traverse`].
+//! `(t, object)` by the same rule whatever came first, and a box is entered only when it
+//! starts within that `t`, as in [`Bvh::traverse`].
 
 use super::Bvh;
 use super::wide::Child;
@@ -32,18 +32,23 @@ struct Prepared<F> {
     inv_far: [F; 3],
 }
 
-/// A ray of the batch that has reached a node: its index and its entry distance into
-/// the node's box.
-pub type Entry<F> = (u32, F);
+/// A ray of the batch that has reached a node: its index in the batch.
+///
+/// No entry distance goes with it. A ray whose nearest hit has moved before a box it
+/// entered still reaches that box's node, but enters none of its children: their boxes
+/// lie inside the node's, so they start no nearer, and each test is clipped to the ray's
+/// reach. Without the distances a node writes half as much per ray (`random_spheres`:
+/// see the commit).
+pub type Entry = u32;
 
 /// Buffers for [`Bvh::traverse_all`], kept from batch to batch.
 #[derive(Clone, Debug, Default)]
 pub struct Streams<F> {
     prepared: Vec<Prepared<F>>,
     /// The rays of each direction octant.
-    octants: [Vec<Entry<F>>; 8],
+    octants: [Vec<Entry>; 8],
     /// One for each level of the tree.
-    levels: Vec<Level<F>>,
+    levels: Vec<Level>,
     /// The stack of a ray searching a subtree alone.
     stack: Vec<(Child, F)>,
 }
@@ -53,30 +58,30 @@ const CHUNK: usize = 64;
 
 /// A level's buffers: the rays of a chunk entering each of the node's four children.
 #[derive(Clone, Debug)]
-struct Level<F> {
-    children: [[Entry<F>; CHUNK]; 4],
+struct Level {
+    children: [[Entry; CHUNK]; 4],
 }
 
-impl<F: Float> Default for Level<F> {
+impl Default for Level {
     fn default() -> Self {
         Self {
-            children: [[(0, F::zero()); CHUNK]; 4],
+            children: [[0; CHUNK]; 4],
         }
     }
 }
 
 impl<F: Float> Bvh<F> {
-    /// Calls `leaf(k, entries, t_max)` for each leaf `k` with the rays of `rays` whose
-    /// boxes lead to it, as `(ray index, entry distance)`; `t_max[i]` is ray `i`'s
-    /// current reach, which the callback lowers as it finds hits. A leaf's callback gets
-    /// only rays whose entry was within reach when the leaf's parent was tested, and
-    /// must itself skip those with `entry > t_max` by then.
+    /// Calls `leaf(k, rays, t_max)` for each leaf `k` with the indices in `rays` of the
+    /// rays whose boxes lead to it; `t_max[i]` is ray `i`'s current reach, which the
+    /// callback lowers as it finds hits. A leaf's callback gets the rays whose entry into
+    /// its box was within reach when the leaf's parent was tested: a ray may since have
+    /// found a hit nearer than the box, and the callback must keep the nearer hit.
     pub fn traverse_all(
         &self,
         rays: &[Ray<F>],
         t_max: &mut [F],
         streams: &mut Streams<F>,
-        mut leaf: impl FnMut(usize, &[Entry<F>], &mut [F]),
+        mut leaf: impl FnMut(usize, &[Entry], &mut [F]),
     ) {
         debug_assert_eq!(rays.len(), t_max.len());
         let Some(root) = self.root else { return };
@@ -94,7 +99,7 @@ impl<F: Float> Bvh<F> {
             let octant = usize::from(inv[0] < F::zero())
                 | usize::from(inv[1] < F::zero()) << 1
                 | usize::from(inv[2] < F::zero()) << 2;
-            octants[octant].push((i as u32, F::zero()));
+            octants[octant].push(i as u32);
             prepared.push(Prepared {
                 origin: [ray.origin.x, ray.origin.y, ray.origin.z],
                 inv_d: inv,
@@ -138,7 +143,7 @@ struct Walk<'w, F, L> {
     leaf: &'w mut L,
 }
 
-impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
+impl<F: Float, L: FnMut(usize, &[Entry], &mut [F])> Walk<'_, F, L> {
     /// Tests wide node `i` against the rays `list` of direction octant `octant`, then
     /// walks its children near to far along the octant with the rays entering each.
     ///
@@ -146,18 +151,15 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
     /// nothing, and each child's rays are gathered by writing every ray to its list and
     /// counting only those whose lane's comparison holds. (Branching on each ray's lanes
     /// mispredicts about half of them.)
-    fn node(&mut self, i: u32, list: &[Entry<F>], octant: usize, levels: &mut [Level<F>]) {
+    fn node(&mut self, i: u32, list: &[Entry], octant: usize, levels: &mut [Level]) {
         if list.len() <= ALONE {
-            for &(r, entry) in list {
+            for &r in list {
                 let ri = r as usize;
-                if entry > self.t_max[ri] {
-                    continue;
-                }
                 let (leaf, t_max) = (&mut *self.leaf, &mut *self.t_max);
                 let start = Some(Child::Node(i));
                 self.bvh
                     .traverse_wide(start, self.stack, &self.rays[ri], t_max[ri], |k, _| {
-                        leaf(k, &[(r, F::zero())], t_max);
+                        leaf(k, &[r], t_max);
                         Some(t_max[ri])
                     });
             }
@@ -171,20 +173,19 @@ impl<F: Float, L: FnMut(usize, &[Entry<F>], &mut [F])> Walk<'_, F, L> {
             // moved on) where it enters; the indices are masked to the lists' fixed size,
             // so there is no bounds check either.
             let mut counts = [0u32; 4];
-            for &(r, entry) in chunk {
+            for &r in chunk {
                 let reach = self.t_max[r as usize];
                 let (t0, t1) = entries(&near, &far, &self.prepared[r as usize], reach);
-                let alive = entry <= reach;
                 let lanes = here
                     .children
                     .iter_mut()
                     .zip(&mut counts)
                     .zip(t0.0.into_iter().zip(t1.0));
                 for ((children, count), (t0, t1)) in lanes {
-                    children[*count as usize & (CHUNK - 1)] = (r, t0);
+                    children[*count as usize & (CHUNK - 1)] = r;
                     // One comparison per lane added to its count, not a bit mask: the
                     // counts stay one vector, where a mask's bits are pulled out one by one.
-                    *count += u32::from(alive & (t0 <= t1));
+                    *count += u32::from(t0 <= t1);
                 }
             }
             for &lane in &self.bvh.orders[i as usize][octant] {

@@ -405,13 +405,10 @@ impl<F: Float> Index<F> {
         let streamed = match (&self.bvh, &self.leaves) {
             (Some(bvh), Leaves::Packets) => {
                 let (ts, ids) = (&mut near.t, &mut near.id);
-                bvh.traverse_all(rays, ts, &mut near.streams, |k, entries, ts| {
+                bvh.traverse_all(rays, ts, &mut near.streams, |k, reached, ts| {
                     let p = &self.in_tree.packets[k];
-                    for &(r, entry) in entries {
+                    for &r in reached {
                         let r = r as usize;
-                        if entry > ts[r] {
-                            continue;
-                        }
                         if let Some(nearer) = Self::beats(p, &rays[r], ts[r], ids[r]) {
                             (ts[r], ids[r]) = nearer;
                         }
