@@ -170,22 +170,20 @@ impl<F: Float, L: FnMut(usize, &[Entry], &mut [F])> Walk<'_, F, L> {
         let (here, deeper) = levels.split_first_mut().expect("levels cover the tree's depth");
         for chunk in list.chunks(CHUNK) {
             // Each ray is written to all four children's lists and kept (its list's count
-            // moved on) where it enters; the indices are masked to the lists' fixed size,
-            // so there is no bounds check either.
+            // moved on) where it enters; the indices are masked to the lists' fixed size
+            // (one vector operation for the four), so there is no bounds check either.
             let mut counts = [0u32; 4];
+            // `prepared` cut to `t_max`'s length: one bounds check serves both.
+            let prepared = &self.prepared[..self.t_max.len()];
             for &r in chunk {
                 let reach = self.t_max[r as usize];
-                let (t0, t1) = entries(&near, &far, &self.prepared[r as usize], reach);
-                let lanes = here
-                    .children
-                    .iter_mut()
-                    .zip(&mut counts)
-                    .zip(t0.0.into_iter().zip(t1.0));
-                for ((children, count), (t0, t1)) in lanes {
-                    children[*count as usize & (CHUNK - 1)] = r;
+                let (t0, t1) = entries(&near, &far, &prepared[r as usize], reach);
+                let at = counts.map(|c| c as usize & (CHUNK - 1));
+                for lane in 0..4 {
+                    here.children[lane][at[lane]] = r;
                     // One comparison per lane added to its count, not a bit mask: the
                     // counts stay one vector, where a mask's bits are pulled out one by one.
-                    *count += u32::from(t0 <= t1);
+                    counts[lane] += u32::from(t0.0[lane] <= t1.0[lane]);
                 }
             }
             for &lane in &self.bvh.orders[i as usize][octant] {
