@@ -407,6 +407,8 @@ impl<F: Float> Index<F> {
                 let (ts, ids) = (&mut near.t, &mut near.id);
                 bvh.traverse_all(rays, ts, &mut near.streams, |k, reached, ts| {
                     let p = &self.in_tree.packets[k];
+                    // All cut to one length: one bounds check serves the three.
+                    let (rays, ids) = (&rays[..ts.len()], &mut ids[..ts.len()]);
                     for &r in reached {
                         let r = r as usize;
                         if let Some(nearer) = Self::beats(p, &rays[r], ts[r], ids[r]) {
