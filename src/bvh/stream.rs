@@ -6,8 +6,9 @@
 //! iterations of a node's loop belong to different rays and do not depend on each
 //! other: they overlap. The price is the order: all the rays of a stream visit a node's
 //! children in one order, the near-to-far order along their common direction octant
-//! (the batch is split by octant first), not each ray's own; a ray still skips a child
-//! its nearest hit so far has moved out of reach.
+//! (the batch is split by octant first), not each ray's own; a ray whose nearest hit so
+//! far has moved before a child's box still reaches that child's node, but goes no
+//! deeper.
 //!
 //! The answer does not depend on the order: a leaf's hits update each ray's nearest
 //! `(t, object)` by the same rule whatever came first, and a box is entered only when it
