@@ -68,7 +68,7 @@ pub enum MaterialKind<F> {
     Dielectric(Dielectric<F>),
 }
 
-impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
+impl<F: Float, R: Rng + 'static> Material<F, R> for MaterialKind<F> {
     #[inline(always)]
     fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
         match self {
