@@ -83,9 +83,9 @@ pub fn lit<F: Float>(x: f64) -> F {
     F::from_f64(x)
 }
 
-/// [`Float::step_toward`] on the bits of four values `b` and four sign sources `sb`,
-/// as signed integers of `$float`'s width `$int` (`i32` for `f32`, `i64` for `f64`),
-/// lane by lane with bitwise selects and no branch.
+/// [`Float::step_toward_each`] for `$float`, on its bits as signed integers of its width
+/// `$int` (`i32` for `f32`, `i64` for `f64`), in four lanes (the fourth idle), with
+/// bitwise selects and no branch.
 ///
 /// In sign-magnitude bits, a step towards `s` grows the magnitude (adds 1 to the bits)
 /// when the value and `s` have the same sign and shrinks it (subtracts 1) when not; from
@@ -98,12 +98,14 @@ pub fn lit<F: Float>(x: f64) -> F {
 /// compiled to three scalar copies with a branch each. (No multiplication: a 32- or
 /// 64-bit integer product has no SSE2 instruction.)
 macro_rules! step_lanes {
-    ($float:ty, $int:ty, $b:expr, $sb:expr) => {{
+    ($float:ty, $int:ty, $p:expr, $s:expr) => {{
         #[inline(always)]
         fn lanes(f: impl Fn(usize) -> $int) -> [$int; 4] {
             [f(0), f(1), f(2), f(3)]
         }
-        let (b, sb): ([$int; 4], [$int; 4]) = ($b, $sb);
+        let (p, s): ([$float; 3], [$float; 3]) = ($p, $s);
+        let b = lanes(|k| if k < 3 { p[k].to_bits() as $int } else { 0 });
+        let sb = lanes(|k| if k < 3 { s[k].to_bits() as $int } else { 0 });
         let inf = <$float>::INFINITY.to_bits() as $int;
         let mask = |c: bool| -<$int>::from(c);
         let mag = lanes(|k| b[k] & <$int>::MAX);
@@ -113,7 +115,8 @@ macro_rules! step_lanes {
         let at_zero = lanes(|k| mask(mag[k] == 0));
         let moved = lanes(|k| (from_zero[k] & at_zero[k]) | (stepped[k] & !at_zero[k]));
         let go = lanes(|k| mask((mag[k] < inf) & (smag[k] != 0) & (smag[k] <= inf)));
-        lanes(|k| (moved[k] & go[k]) | (b[k] & !go[k]))
+        let r = lanes(|k| (moved[k] & go[k]) | (b[k] & !go[k]));
+        [r[0], r[1], r[2]].map(|r| <$float>::from_bits(r as _))
     }};
 }
 
@@ -145,21 +148,11 @@ impl Float for f32 {
     fn step_toward(self, s: Self) -> Self {
         Self::step_toward_each([self; 3], [s; 3])[0]
     }
-    /// The three steps as lanes of one vector: `step_lanes!` on four lanes (the fourth
-    /// idle), one sequence of SIMD integer operations (this runs once per spawned ray).
+    /// The three steps as lanes of one vector, one sequence of SIMD integer operations
+    /// (`step_lanes!`; this runs once per spawned ray).
     #[inline]
     fn step_toward_each(p: [Self; 3], s: [Self; 3]) -> [Self; 3] {
-        let bits = |v: [f32; 3]| {
-            [
-                v[0].to_bits() as i32,
-                v[1].to_bits() as i32,
-                v[2].to_bits() as i32,
-                0,
-            ]
-        };
-        let (b, sb) = (bits(p), bits(s));
-        let r = step_lanes!(f32, i32, b, sb);
-        [r[0], r[1], r[2]].map(|r| f32::from_bits(r as u32))
+        step_lanes!(f32, i32, p, s)
     }
 }
 
@@ -190,20 +183,10 @@ impl Float for f64 {
     fn step_toward(self, s: Self) -> Self {
         Self::step_toward_each([self; 3], [s; 3])[0]
     }
-    /// As for `f32`: four 64-bit lanes.
+    /// As for `f32`, in 64-bit lanes.
     #[inline]
     fn step_toward_each(p: [Self; 3], s: [Self; 3]) -> [Self; 3] {
-        let bits = |v: [f64; 3]| {
-            [
-                v[0].to_bits() as i64,
-                v[1].to_bits() as i64,
-                v[2].to_bits() as i64,
-                0,
-            ]
-        };
-        let (b, sb) = (bits(p), bits(s));
-        let r = step_lanes!(f64, i64, b, sb);
-        [r[0], r[1], r[2]].map(|r| f64::from_bits(r as u64))
+        step_lanes!(f64, i64, p, s)
     }
 }
 

@@ -34,8 +34,9 @@ fn signed_uniform<R: Rng + ?Sized>(rng: &mut R) -> f64 {
 /// excludes a ball of measure `~10⁻¹⁸`, whose directions are uniform anyway, so the
 /// distribution is unchanged.
 ///
-/// This is the definition, one candidate at a time; the renderer draws with
-/// [`unit_sphere_rejection_paired`], which gives the same point from the same draws.
+/// This is the definition, one candidate at a time; with the default generator the
+/// renderer draws with [`unit_sphere_rejection_paired`], which gives the same point from
+/// the same draws.
 ///
 /// # Precision
 /// Computed in `f64`; the result is unit length within `2.5·2⁻⁵²` (first-order bound `2.25·2⁻⁵²`) and exactly reproducible.
@@ -59,7 +60,8 @@ pub fn unit_sphere_rejection<R: Rng + ?Sized>(rng: &mut R) -> [f64; 3] {
 /// candidate, so a branch on each one mispredicts about half the time; the two
 /// candidates pass together with probability `1 − (1 − π/6)² ≈ 0.77`. The second
 /// candidate's draws are wasted when the first passes, which is cheap for a small
-/// copyable generator such as the [`DefaultRng`]. (`random_spheres`: see the commit.)
+/// copyable generator such as the [`DefaultRng`]. (`random_spheres`, `f32`: 35 more
+/// instructions per ray, and a median 11.6 → 12.1 Mrays/s in ten runs interleaved.)
 #[inline(always)]
 pub fn unit_sphere_rejection_paired<R: Rng + Clone>(rng: &mut R) -> [f64; 3] {
     loop {
