@@ -61,19 +61,24 @@ pub use error::{Error, Result};
 pub use float::{Float, lit};
 pub use image::{Encoding, Image, Image16};
 pub use light::PointLight;
-pub use material::{Dielectric, Lambertian, Material, MaterialKind, Mirror, Scatter};
+pub use material::{Dielectric, Lambertian, Material, MaterialKind, Mirror, Scatter, SharedMaterial};
 pub use ray::Ray;
-pub use render::{DefaultRng, Render, RenderSettings, RenderStats, render, render_tile, render_with};
+pub use render::{Rect, Render, RenderSettings, RenderStats, Renderer, render, render_reference};
+pub use sampling::DefaultRng;
 pub use scene::{Acceleration, DynScene, EnumScene, Object, Scene};
 pub use shape::{Hit, Hittable, Plane, ShapeKind, Sphere, Triangle};
 pub use vec3::{Color, Vec3};
+
+/// The random generators' crate, re-exported so a user's generator and `Rng` bounds name
+/// the same version as the renderer's.
+pub use rand;
 
 /// Everything needed to build and render a scene.
 pub mod prelude {
     pub use crate::image::{read_ppm, write_png, write_ppm};
     pub use crate::{
         Background, Camera, Color, Dielectric, DynScene, Encoding, EnumScene, Error, Float, Hittable,
-        Lambertian, LookAtCamera, Material, MaterialKind, Mirror, Plane, PointLight, Ray, RenderSettings,
-        Scene, ScreenCamera, ShapeKind, Sphere, Triangle, Vec3, lit, render, render_tile, render_with,
+        Lambertian, LookAtCamera, Material, MaterialKind, Mirror, Plane, PointLight, Ray, Rect,
+        RenderSettings, Renderer, Scene, ScreenCamera, ShapeKind, Sphere, Triangle, Vec3, lit, render,
     };
 }

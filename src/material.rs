@@ -57,6 +57,45 @@ macro_rules! forward_material {
 }
 forward_material!(&T, Box<T>, Arc<T>);
 
+/// A material behind a shared pointer, as a trait object: the material type of a
+/// [`DynScene`](crate::DynScene), where one material may serve many objects.
+///
+/// `Arc::new(my_material).into()` makes one (so `scene.add(Box::new(shape),
+/// Arc::new(material))` needs no casts), and so does an `Arc<dyn Material>` already shared.
+#[derive(Clone)]
+pub struct SharedMaterial<F, R: ?Sized>(pub Arc<dyn Material<F, R> + Send + Sync>);
+
+impl<F: Float, R: Rng + ?Sized, T: Material<F, R> + Send + Sync + 'static> From<Arc<T>>
+    for SharedMaterial<F, R>
+{
+    fn from(material: Arc<T>) -> Self {
+        Self(material)
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> From<Arc<dyn Material<F, R> + Send + Sync>> for SharedMaterial<F, R> {
+    fn from(material: Arc<dyn Material<F, R> + Send + Sync>) -> Self {
+        Self(material)
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> Material<F, R> for SharedMaterial<F, R> {
+    #[inline]
+    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
+        self.0.scatter(ray, hit, rng)
+    }
+    #[inline]
+    fn diffuse_albedo(&self) -> Option<Color<F>> {
+        self.0.diffuse_albedo()
+    }
+}
+
+impl<F, R: ?Sized> std::fmt::Debug for SharedMaterial<F, R> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("SharedMaterial(dyn Material)")
+    }
+}
+
 /// The enum fast path: every concrete material, dispatched by `match`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum MaterialKind<F> {
@@ -68,7 +107,7 @@ pub enum MaterialKind<F> {
     Dielectric(Dielectric<F>),
 }
 
-impl<F: Float, R: Rng + 'static> Material<F, R> for MaterialKind<F> {
+impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
     #[inline(always)]
     fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
         match self {

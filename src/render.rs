@@ -1,14 +1,17 @@
-//! Rendering: the recursive [`trace`](Tracer::trace), the specification's formulation of a
-//! path; the breadth-first form the drivers run, which advances the paths of two rows at a
-//! time bounce by bounce and gives the recursion's image bit for bit (`wavefront`); and the
-//! parallel, deterministic drivers [`render`] and [`render_tile`].
+//! Rendering. The recursive [`Tracer::trace`] is the specification's formulation of a
+//! path; [`render_reference`] calls it for every sample of every pixel and so defines every
+//! image. [`Renderer::render`] gives the same bytes faster: the paths of a band of pixels
+//! advance together, bounce by bounce (`batch`), on every core (rayon).
 
+mod batch;
+mod progress;
+mod reference;
 mod seed;
 mod settings;
 mod trace;
-mod wavefront;
 
-pub use seed::pixel_seed;
+pub use reference::render_reference;
+pub use seed::sample_seed;
 pub use settings::{Rect, RenderSettings};
 pub use trace::Tracer;
 
@@ -17,21 +20,20 @@ use crate::error::Result;
 use crate::float::Float;
 use crate::image::Image;
 use crate::material::Material;
+use crate::sampling::DefaultRng;
 use crate::scene::Scene;
 use crate::shape::Hittable;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use batch::Batch;
+use progress::Progress;
 use rand::{Rng, SeedableRng};
 use rayon::prelude::*;
 use std::fmt;
-use std::io::IsTerminal;
+use std::marker::PhantomData;
 use std::time::{Duration, Instant};
-
-/// The default random generator: xoshiro256++, a fixed, documented algorithm, so a seed
-/// gives the same image on every machine and every version of this crate.
-pub type DefaultRng = rand::rngs::Xoshiro256PlusPlus;
 
 /// A finished render: the linear image and what it cost.
 #[derive(Clone, Debug)]
+#[must_use]
 pub struct Render {
     /// The linear RGB image.
     pub image: Image,
@@ -52,6 +54,7 @@ pub struct RenderStats {
 
 impl RenderStats {
     /// Million rays per second of wall time.
+    #[must_use]
     pub fn mrays_per_second(&self) -> f64 {
         self.rays as f64 / self.elapsed.as_secs_f64().max(1e-9) / 1e6
     }
@@ -72,7 +75,11 @@ impl fmt::Display for RenderStats {
     }
 }
 
-/// Renders the whole image with the [`DefaultRng`]. See [`render_tile`].
+/// Renders the whole image with `settings` and the [`DefaultRng`]: shorthand for
+/// `Renderer::new(scene, camera).settings(*settings).render()`.
+///
+/// # Errors
+/// Invalid settings.
 pub fn render<F, S, M, C>(scene: &Scene<F, S, M>, camera: &C, settings: &RenderSettings) -> Result<Render>
 where
     F: Float,
@@ -80,98 +87,151 @@ where
     M: Material<F, DefaultRng> + Sync,
     C: Camera<F> + Sync,
 {
-    render_with::<DefaultRng, F, S, M, C>(scene, camera, settings)
+    Renderer::new(scene, camera).settings(*settings).render()
 }
 
-/// Renders the whole image with the random generator `R`. See [`render_tile`].
-pub fn render_with<R, F, S, M, C>(
-    scene: &Scene<F, S, M>,
-    camera: &C,
-    settings: &RenderSettings,
-) -> Result<Render>
+/// A render to run: the scene, the camera, the settings, the part of the image and the
+/// random generator `R`.
+///
+/// ```
+/// # use raytrace::prelude::*;
+/// # let mut scene = EnumScene::<f32>::new(Background::default());
+/// # scene.add(Sphere::new(Vec3::new(0.0, 0.0, -3.0), 1.0)?, Lambertian::new(Vec3::splat(0.5))?);
+/// let camera = ScreenCamera::new(40, 20)?;
+/// let top_half = Rect { x: 0, y: 0, width: 40, height: 10 };
+/// let render = Renderer::new(&scene, &camera).spp(4).max_depth(10).seed(1).tile(top_half).render()?;
+/// assert_eq!(render.image.height(), 10);
+/// # Ok::<(), raytrace::Error>(())
+/// ```
+#[must_use]
+pub struct Renderer<'a, F, S, M, C, R = DefaultRng> {
+    scene: &'a Scene<F, S, M>,
+    camera: &'a C,
+    settings: RenderSettings,
+    tile: Option<Rect>,
+    rng: PhantomData<fn() -> R>,
+}
+
+impl<'a, F: Float, S, M, C: Camera<F>> Renderer<'a, F, S, M, C> {
+    /// The whole image with the default settings ([`RenderSettings::default`]: one ray per
+    /// pixel centre, depth 10, seed 0) and the [`DefaultRng`].
+    pub fn new(scene: &'a Scene<F, S, M>, camera: &'a C) -> Self {
+        Self {
+            scene,
+            camera,
+            settings: RenderSettings::default(),
+            tile: None,
+            rng: PhantomData,
+        }
+    }
+}
+
+impl<'a, F: Float, S, M, C: Camera<F>, R> Renderer<'a, F, S, M, C, R> {
+    /// Samples (rays) per pixel, at least 1.
+    pub fn spp(mut self, samples_per_pixel: u32) -> Self {
+        self.settings.samples_per_pixel = samples_per_pixel;
+        self
+    }
+
+    /// The most bounces a path may take ([`RenderSettings::max_depth`]).
+    pub fn max_depth(mut self, max_depth: u32) -> Self {
+        self.settings.max_depth = max_depth;
+        self
+    }
+
+    /// The seed every sample's random stream derives from.
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.settings.seed = seed;
+        self
+    }
+
+    /// Shows a progress bar on stderr when it is a terminal.
+    pub fn progress(mut self, progress: bool) -> Self {
+        self.settings.progress = progress;
+        self
+    }
+
+    /// All of the above at once.
+    pub fn settings(mut self, settings: RenderSettings) -> Self {
+        self.settings = settings;
+        self
+    }
+
+    /// Renders only the pixels of `tile`, which equal the same pixels of the whole image.
+    pub fn tile(mut self, tile: Rect) -> Self {
+        self.tile = Some(tile);
+        self
+    }
+
+    /// Draws from the generator `G` instead.
+    pub fn rng<G: Rng + SeedableRng>(self) -> Renderer<'a, F, S, M, C, G> {
+        Renderer {
+            scene: self.scene,
+            camera: self.camera,
+            settings: self.settings,
+            tile: self.tile,
+            rng: PhantomData,
+        }
+    }
+
+    fn region(&self) -> Rect {
+        self.tile
+            .unwrap_or_else(|| Rect::full(self.camera.width(), self.camera.height()))
+    }
+}
+
+impl<F, S, M, C, R> Renderer<'_, F, S, M, C, R>
 where
-    R: Rng + SeedableRng,
     F: Float,
     S: Hittable<F> + Sync,
     M: Material<F, R> + Sync,
     C: Camera<F> + Sync,
-{
-    let full = Rect::full(camera.width(), camera.height());
-    render_tile::<R, F, S, M, C>(scene, camera, settings, full)
-}
-
-/// Renders the pixels of `tile`, in parallel on the current rayon thread pool.
-///
-/// Each pixel draws from its own generator, seeded from the render seed and the pixel's
-/// index in the **whole** image ([`pixel_seed`]), never from a thread: the result is
-/// bit-identical for any number of threads, and a tile equals the same pixels of the
-/// whole image, so tiles can be rendered anywhere and stitched.
-///
-/// With one sample per pixel the ray goes through the pixel centre (the specification's
-/// basic mode); with more, each sample goes through a uniform random point of the pixel's
-/// cell and the pixel is their mean.
-///
-/// # Errors
-/// Invalid settings, or a tile outside the camera's image.
-pub fn render_tile<R, F, S, M, C>(
-    scene: &Scene<F, S, M>,
-    camera: &C,
-    settings: &RenderSettings,
-    tile: Rect,
-) -> Result<Render>
-where
     R: Rng + SeedableRng,
-    F: Float,
-    S: Hittable<F> + Sync,
-    M: Material<F, R> + Sync,
-    C: Camera<F> + Sync,
 {
-    settings.validate()?;
-    tile.check_inside(camera.width(), camera.height())?;
-    let start = Instant::now();
-    let mut image = Image::new(tile.width, tile.height)?;
-    let progress = progress_bar(settings.progress, tile.height as u64);
-    let band = BAND_ROWS * tile.width;
-    let rays: u64 = image
-        .pixels_mut()
-        .par_chunks_mut(band)
-        .enumerate()
-        .map_init(wavefront::Row::new, |paths, (k, pixels)| {
-            let mut tracer = Tracer::new(scene, settings.max_depth);
-            let at = |i: usize| (tile.x + i % tile.width, tile.y + (k * band + i) / tile.width);
-            let rng = |x: usize, y: usize| {
-                R::seed_from_u64(pixel_seed(settings.seed, (y * camera.width() + x) as u64))
-            };
-            paths.render(&mut tracer, camera, at, settings.samples_per_pixel, rng, pixels);
-            progress.inc(pixels.len().div_ceil(tile.width) as u64);
-            tracer.rays()
+    /// Renders on the current rayon thread pool, bands of rows in parallel, each band's
+    /// paths batched: the bytes of [`render_reference`], on any number of threads.
+    ///
+    /// # Errors
+    /// Invalid settings, or a tile outside the camera's image.
+    pub fn render(&self) -> Result<Render> {
+        let (settings, camera, tile) = (&self.settings, self.camera, self.region());
+        settings.validate()?;
+        tile.check_inside(camera.width(), camera.height())?;
+        let start = Instant::now();
+        let mut image = Image::new(tile.width, tile.height)?;
+        let progress = Progress::new(settings.progress, tile.height as u64);
+        let band = BAND_ROWS * tile.width;
+        let rays: u64 = image
+            .pixels_mut()
+            .par_chunks_mut(band)
+            .enumerate()
+            .map_init(Batch::<F, R>::new, |batch, (k, pixels)| {
+                let mut tracer = Tracer::new(self.scene, settings.max_depth);
+                let at = |i: usize| (tile.x + i % tile.width, tile.y + (k * band + i) / tile.width);
+                batch.render(&mut tracer, camera, settings, at, pixels);
+                progress.inc(pixels.len().div_ceil(tile.width) as u64);
+                tracer.rays()
+            })
+            .sum();
+        progress.finish();
+        Ok(Render {
+            image,
+            stats: RenderStats {
+                rays,
+                elapsed: start.elapsed(),
+                threads: rayon::current_num_threads(),
+            },
         })
-        .sum();
-    progress.finish_and_clear();
-    Ok(Render {
-        image,
-        stats: RenderStats {
-            rays,
-            elapsed: start.elapsed(),
-            threads: rayon::current_num_threads(),
-        },
-    })
+    }
+
+    /// Renders with [`render_reference`]: pixel by pixel on the calling thread.
+    ///
+    /// # Errors
+    /// As [`Renderer::render`].
+    pub fn render_reference(&self) -> Result<Render> {
+        render_reference::<R, F, S, M, C>(self.scene, self.camera, &self.settings, self.region())
+    }
 }
 
-/// Rows rendered together as one batch of paths ([`wavefront`]). Bands of one or two rows
-/// ran `four_mirrors` about 2 % faster than bands of four (the batch's rays stay in the
-/// first-level cache), `random_spheres` the same.
-const BAND_ROWS: usize = 2;
-
-/// A progress bar on stderr (work done, rate, time left), hidden unless asked for and
-/// stderr is a terminal.
-fn progress_bar(wanted: bool, rows: u64) -> ProgressBar {
-    if !wanted || !std::io::stderr().is_terminal() {
-        return ProgressBar::hidden();
-    }
-    let bar = ProgressBar::with_draw_target(Some(rows), ProgressDrawTarget::stderr());
-    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} rows  {per_sec}  eta {eta}") {
-        bar.set_style(style);
-    }
-    bar
-}
+/// Rows rendered together as one batch of paths, one sample per pixel at a time.
+const BAND_ROWS: usize = 4;

@@ -6,10 +6,12 @@
 //! pure functions of those numbers, testable without an RNG.
 
 use crate::float::{Float, lit};
-use crate::render::DefaultRng;
 use crate::vec3::Vec3;
 use rand::Rng;
-use std::any::Any;
+
+/// The default random generator: xoshiro256++, a fixed, documented algorithm, so a seed
+/// gives the same image on every machine and every version of this crate.
+pub type DefaultRng = rand::rngs::Xoshiro256PlusPlus;
 
 /// A uniform `f64` in `[0, 1)`: 53 random bits `k`, `k·2⁻⁵³` (exact), as `rand`'s
 /// `random::<f64>()` draws it.
@@ -34,83 +36,19 @@ fn signed_uniform<R: Rng + ?Sized>(rng: &mut R) -> f64 {
 /// excludes a ball of measure `~10⁻¹⁸`, whose directions are uniform anyway, so the
 /// distribution is unchanged.
 ///
-/// This is the definition, one candidate at a time; with the default generator the
-/// renderer draws with [`unit_sphere_rejection_paired`], which gives the same point from
-/// the same draws.
-///
 /// # Precision
 /// Computed in `f64`; the result is unit length within `2.5·2⁻⁵²` (first-order bound `2.25·2⁻⁵²`) and exactly reproducible.
 pub fn unit_sphere_rejection<R: Rng + ?Sized>(rng: &mut R) -> [f64; 3] {
     loop {
-        let c = candidate(rng);
-        if accepted(&c) {
-            return on_sphere(c);
+        let x = signed_uniform(rng);
+        let y = signed_uniform(rng);
+        let z = signed_uniform(rng);
+        let len2 = x * x + y * y + z * z;
+        if len2 <= 1.0 && len2 > 1e-12 {
+            let inv = 1.0 / len2.sqrt();
+            return [x * inv, y * inv, z * inv];
         }
     }
-}
-
-/// [`unit_sphere_rejection`] two candidates at a time: the same draws in the same order,
-/// the same point, and the generator left in the same state, with one unpredictable
-/// branch per two candidates instead of one per candidate.
-///
-/// Each step draws two candidates from a copy of the generator, keeping a copy of its
-/// state between them, and then picks by selects, not branches: the first candidate
-/// and the state after it if the first is accepted, else the second and the state after
-/// both. It stops if either is accepted. The loop's exit is a coin flip at every
-/// candidate, so a branch on each one mispredicts about half the time; the two
-/// candidates pass together with probability `1 − (1 − π/6)² ≈ 0.77`. The second
-/// candidate's draws are wasted when the first passes, which is cheap for a small
-/// copyable generator such as the [`DefaultRng`]. (`random_spheres`, `f32`: 35 more
-/// instructions per ray, and a median 11.6 → 12.1 Mrays/s in ten runs interleaved.)
-#[inline(always)]
-pub fn unit_sphere_rejection_paired<R: Rng + Clone>(rng: &mut R) -> [f64; 3] {
-    loop {
-        let mut ahead = rng.clone();
-        let first = candidate(&mut ahead);
-        let between = ahead.clone();
-        let second = candidate(&mut ahead);
-        let (ok_first, ok_second) = (accepted(&first), accepted(&second));
-        let c = std::hint::select_unpredictable(ok_first, first, second);
-        *rng = std::hint::select_unpredictable(ok_first, between, ahead);
-        if ok_first | ok_second {
-            return on_sphere(c);
-        }
-    }
-}
-
-/// [`unit_sphere_rejection`]'s point, drawn two candidates at a time if the generator is
-/// the [`DefaultRng`], and one at a time otherwise (a generator may not be copyable:
-/// `rand`'s `StdRng` is not). The type test is resolved at compile time.
-#[inline(always)]
-fn unit_sphere_point<R: Rng + 'static>(rng: &mut R) -> [f64; 3] {
-    match (rng as &mut dyn Any).downcast_mut::<DefaultRng>() {
-        Some(rng) => unit_sphere_rejection_paired(rng),
-        None => unit_sphere_rejection(rng),
-    }
-}
-
-/// One candidate of the rejection loop: a point `X` uniform in the cube `[−1, 1]³` and
-/// `|X|²`.
-#[inline(always)]
-fn candidate<R: Rng + ?Sized>(rng: &mut R) -> [f64; 4] {
-    let x = signed_uniform(rng);
-    let y = signed_uniform(rng);
-    let z = signed_uniform(rng);
-    [x, y, z, x * x + y * y + z * z]
-}
-
-/// Whether a candidate lies in the ball, away from its centre: `10⁻¹² < |X|² ≤ 1` (both
-/// tests evaluated, no branch between them).
-#[inline(always)]
-fn accepted(c: &[f64; 4]) -> bool {
-    (c[3] <= 1.0) & (c[3] > 1e-12)
-}
-
-/// An accepted candidate moved onto the sphere: `X/|X|`.
-#[inline(always)]
-fn on_sphere([x, y, z, len2]: [f64; 4]) -> [f64; 3] {
-    let inv = 1.0 / len2.sqrt();
-    [x * inv, y * inv, z * inv]
 }
 
 /// The specification's Lambertian direction at a surface with unit normal `n`: the unit
@@ -118,20 +56,16 @@ fn on_sphere([x, y, z, len2]: [f64; 4]) -> [f64; 3] {
 /// `P + N` (tangent to the surface at `P`): `D = (N + X)/|N + X|`, `X` from
 /// [`unit_sphere_rejection`]. Its density is `cos θ / π` (the tangent-sphere construction).
 ///
-/// With the renderer's [`DefaultRng`], `X` is drawn by [`unit_sphere_rejection_paired`]
-/// (the same point from the same draws, with fewer mispredicted branches); with any
-/// other generator, by the definition. The choice is made by type at compile time.
-///
 /// # Precision
 /// When `X ≈ −N` the sum cancels and its direction is rounding noise. Such draws are
 /// redrawn: the rejected cap `|N + X|² < 64ε` maps to directions within `~4√ε` of the
 /// tangent plane, where the cosine density is itself `~4√ε`, so the rejected
 /// probability is `< 16ε` (`2·10⁻⁶` in f32): no NaN, no direction below the surface,
 /// and no bias a test could detect.
-pub fn lambertian_direction<F: Float, R: Rng + 'static>(n: Vec3<F>, rng: &mut R) -> Vec3<F> {
+pub fn lambertian_direction<F: Float, R: Rng + ?Sized>(n: Vec3<F>, rng: &mut R) -> Vec3<F> {
     let tiny = F::eps() * lit(64.0);
     loop {
-        let [x, y, z] = unit_sphere_point(rng);
+        let [x, y, z] = unit_sphere_rejection(rng);
         let d = n + Vec3::new(lit(x), lit(y), lit(z));
         let len2 = d.length_squared();
         if len2 > tiny {
@@ -194,56 +128,6 @@ mod tests {
             assert_eq!(uniform(&mut a).to_bits(), want.to_bits());
             assert_eq!(signed_uniform(&mut c).to_bits(), (2.0 * want - 1.0).to_bits());
         }
-    }
-
-    /// Two candidates at a time give every point of the one-at-a-time definition, from
-    /// the same draws: after each point both generators are in the same state.
-    #[test]
-    fn paired_rejection_is_the_definition() {
-        let mut a = DefaultRng::seed_from_u64(21);
-        let mut b = a.clone();
-        for _ in 0..100_000 {
-            let want = unit_sphere_rejection(&mut a).map(f64::to_bits);
-            assert_eq!(unit_sphere_rejection_paired(&mut b).map(f64::to_bits), want);
-            assert_eq!(a, b, "the generators' states part");
-        }
-    }
-
-    /// The default generator wrapped in another type, which takes the one-at-a-time path.
-    struct Plain(Xoshiro256PlusPlus);
-
-    impl rand::TryRng for Plain {
-        type Error = std::convert::Infallible;
-        fn try_next_u32(&mut self) -> Result<u32, Self::Error> {
-            Ok(self.0.next_u32())
-        }
-        fn try_next_u64(&mut self) -> Result<u64, Self::Error> {
-            Ok(self.0.next_u64())
-        }
-        fn try_fill_bytes(&mut self, dst: &mut [u8]) -> Result<(), Self::Error> {
-            self.0.fill_bytes(dst);
-            Ok(())
-        }
-    }
-
-    /// The matte direction is the same whichever path draws it: the default generator's
-    /// (two candidates at a time) and any other's (the definition).
-    #[test]
-    fn both_paths_give_one_direction() {
-        let mut fast = Xoshiro256PlusPlus::seed_from_u64(33);
-        let mut plain = Plain(fast.clone());
-        let n = Vec3::new(0.0f32, 0.6, 0.8);
-        for _ in 0..20_000 {
-            let (a, b) = (
-                lambertian_direction(n, &mut fast),
-                lambertian_direction(n, &mut plain),
-            );
-            assert_eq!(
-                [a.x, a.y, a.z].map(f32::to_bits),
-                [b.x, b.y, b.z].map(f32::to_bits)
-            );
-        }
-        assert_eq!(fast, plain.0);
     }
 
     #[test]

@@ -5,11 +5,12 @@ mod index;
 use crate::background::Background;
 use crate::float::Float;
 use crate::light::PointLight;
-use crate::material::{Material, MaterialKind};
+use crate::material::{MaterialKind, SharedMaterial};
 use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, ShapeKind};
 use index::Index;
 pub(crate) use index::Nearests;
+use rand::Rng;
 use std::marker::PhantomData;
 use std::sync::{Arc, OnceLock};
 
@@ -70,8 +71,38 @@ impl Acceleration {
 /// The fast path: shapes and materials are enums, stored inline.
 pub type EnumScene<F> = Scene<F, ShapeKind<F>, MaterialKind<F>>;
 
-/// The abstract path: boxed shapes and shared materials behind trait objects.
-pub type DynScene<F, R> = Scene<F, Box<dyn Hittable<F> + Send + Sync>, Arc<dyn Material<F, R> + Send + Sync>>;
+/// The abstract path: boxed shapes and shared materials behind trait objects, the spec's
+/// "vector of smart pointers". `scene.add(Box::new(shape), Arc::new(material))` adds any
+/// shape and material, the user's own included.
+pub type DynScene<F, R> = Scene<F, Box<dyn Hittable<F> + Send + Sync>, SharedMaterial<F, R>>;
+
+impl<F: Float> EnumScene<F> {
+    /// The same scene on the abstract path: every shape boxed, every material shared
+    /// behind a trait object. It renders to the same bytes, only slower.
+    #[must_use]
+    pub fn to_dyn<R: Rng + ?Sized + 'static>(&self) -> DynScene<F, R> {
+        let mut scene = DynScene::new(self.background);
+        scene.set_acceleration(self.acceleration);
+        for o in &self.objects {
+            let shape: Box<dyn Hittable<F> + Send + Sync> = match o.shape {
+                ShapeKind::Sphere(s) => Box::new(s),
+                ShapeKind::Plane(p) => Box::new(p),
+                ShapeKind::Triangle(t) => Box::new(t),
+                ShapeKind::TextbookSphere(s) => Box::new(s),
+            };
+            let material: SharedMaterial<F, R> = match o.material {
+                MaterialKind::Mirror(m) => Arc::new(m).into(),
+                MaterialKind::Lambertian(m) => Arc::new(m).into(),
+                MaterialKind::Dielectric(m) => Arc::new(m).into(),
+            };
+            scene.add(shape, material);
+        }
+        for &light in &self.lights {
+            scene.add_light(light);
+        }
+        scene
+    }
+}
 
 impl<F: Float, S, M> Scene<F, S, M> {
     /// An empty scene with the given background.

@@ -143,6 +143,14 @@ macro_rules! forward_hittable {
 }
 forward_hittable!(&T, Box<T>, Arc<T>);
 
+/// `Box::new(my_shape)` is a shape of a [`DynScene`](crate::DynScene) as it is, with no
+/// `as Box<dyn Hittable<F> + Send + Sync>`.
+impl<F: Float, T: Hittable<F> + Send + Sync + 'static> From<Box<T>> for Box<dyn Hittable<F> + Send + Sync> {
+    fn from(shape: Box<T>) -> Self {
+        shape
+    }
+}
+
 /// The enum fast path: every concrete shape, dispatched by `match` (no vtable, no box).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ShapeKind<F> {

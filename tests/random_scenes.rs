@@ -365,10 +365,7 @@ fn checks_reject_broken_materials<F: Float>() {
         let mut scene = DynScene::<F, DefaultRng>::new(Background::solid(Vec3::splat(F::one())).unwrap());
         for o in build::<F>(d).objects() {
             let shape: Box<dyn Hittable<F> + Send + Sync> = Box::new(o.shape);
-            scene.add(
-                shape,
-                Arc::new(Broken { gain }) as Arc<dyn Material<F, DefaultRng> + Send + Sync>,
-            );
+            scene.add(shape, Arc::new(Broken { gain }));
         }
         scene
     };

@@ -4,9 +4,9 @@
 
 use rand::SeedableRng;
 use raytrace::prelude::*;
-use raytrace::render::{Rect, Tracer};
+use raytrace::render::Tracer;
 use raytrace::shape::Hit;
-use raytrace::{DefaultRng, Image, render_with};
+use raytrace::{DefaultRng, Image, SharedMaterial};
 use std::sync::Arc;
 use twofloat::TwoFloat;
 
@@ -52,11 +52,11 @@ fn enum_scene<F: Float>() -> EnumScene<F> {
 fn dyn_scene<F: Float>() -> DynScene<F, DefaultRng> {
     let mut scene = DynScene::new(Background::default());
     for (shape, part) in parts::<F>() {
-        let material: Arc<dyn Material<F, DefaultRng> + Send + Sync> = match part {
-            Part::Mirror(m) => Arc::new(m),
-            Part::Matte(m) => Arc::new(m),
+        let material: SharedMaterial<F, DefaultRng> = match part {
+            Part::Mirror(m) => Arc::new(m).into(),
+            Part::Matte(m) => Arc::new(m).into(),
         };
-        scene.add(Box::new(shape) as Box<dyn Hittable<F> + Send + Sync>, material);
+        scene.add(Box::new(shape), material);
     }
     scene
 }
@@ -128,7 +128,10 @@ fn a_tile_equals_the_same_pixels_of_the_whole_image() {
             height: 1,
         },
     ] {
-        let part = render_tile::<DefaultRng, _, _, _, _>(&scene, &cam, &settings(2, 1), tile)
+        let part = Renderer::new(&scene, &cam)
+            .settings(settings(2, 1))
+            .tile(tile)
+            .render()
             .unwrap()
             .image;
         for y in 0..tile.height {
@@ -143,16 +146,23 @@ fn a_tile_equals_the_same_pixels_of_the_whole_image() {
         width: 5,
         height: 1,
     };
-    assert!(render_tile::<DefaultRng, _, _, _, _>(&scene, &cam, &settings(1, 1), outside).is_err());
+    let outside = Renderer::new(&scene, &cam).tile(outside);
+    assert!(outside.render().is_err());
+    assert!(outside.render_reference().is_err());
 }
 
 #[test]
 fn any_seedable_generator_works() {
     let cam = ScreenCamera::new(16, 8).unwrap();
     let scene = enum_scene::<f64>();
-    let a = render_with::<rand::rngs::StdRng, _, _, _, _>(&scene, &cam, &settings(2, 3)).unwrap();
-    let b = render_with::<rand::rngs::StdRng, _, _, _, _>(&scene, &cam, &settings(2, 3)).unwrap();
-    assert_eq!(a.image, b.image);
+    let std_rng = Renderer::new(&scene, &cam)
+        .settings(settings(2, 3))
+        .rng::<rand::rngs::StdRng>();
+    let a = std_rng.render().unwrap();
+    assert_eq!(a.image, std_rng.render().unwrap().image);
+    assert_eq!(a.image, std_rng.render_reference().unwrap().image);
+    let default = render(&scene, &cam, &settings(2, 3)).unwrap();
+    assert_ne!(a.image, default.image, "another generator draws other numbers");
 }
 
 #[test]
@@ -303,38 +313,6 @@ fn the_spec_ppm_round_trips_through_the_reader() {
     assert!(first[2] > first[0], "top-left pixel should be sky blue");
 }
 
-/// Two rays traced side by side bring back exactly what each brings back alone (in a
-/// scene of mirrors, which draws no random numbers, so the shared stream cannot differ):
-/// whichever of the two stops first, at whatever depth.
-#[test]
-fn a_pair_of_rays_traces_as_each_alone() {
-    fn check<F: Float>() {
-        let mut scene = EnumScene::<F>::new(Background::default());
-        let s = |x, y, z, r| Sphere::new(Vec3::from_f64(x, y, z), lit(r)).unwrap();
-        let m = |a| Mirror::new(Vec3::splat(lit(a))).unwrap();
-        scene.add(s(-1.0, 0.0, -3.0, 0.9), m(0.9));
-        scene.add(s(1.0, 0.0, -3.0, 0.9), m(0.8));
-        scene.add(s(0.0, -100.9, -3.0, 100.0), m(0.7));
-        let cam = ScreenCamera::new(64, 32).unwrap();
-        let mut rng = DefaultRng::seed_from_u64(1);
-        for depth in [0, 1, 3, 10] {
-            let mut tracer = Tracer::new(&scene, depth);
-            for (i, j) in (0..64).zip((0..32).cycle()) {
-                let a = cam.ray(lit(f64::from(i)), lit(f64::from(j)));
-                let b = cam.ray(lit(f64::from(63 - i)), lit(f64::from(31 - j) * 0.5));
-                let alone = (tracer.trace(&a, 0, &mut rng), tracer.trace(&b, 0, &mut rng));
-                assert_eq!(
-                    tracer.trace_pair(&a, &b, 0, &mut rng),
-                    alone,
-                    "depth {depth}, {a:?} {b:?}"
-                );
-            }
-        }
-    }
-    check::<f32>();
-    check::<f64>();
-}
-
 /// Objects hit at exactly the same distance: the one added first wins, through the plain
 /// loop (spheres packed four at a time; the leftover one, and in f64 two, tested alone),
 /// the BVH, and the trait objects alike.
@@ -365,10 +343,7 @@ fn ties_go_to_the_object_added_first_on_every_path() {
             let mut dyn_scene = DynScene::<f64, DefaultRng>::new(Background::default());
             for (s, m) in build() {
                 scene.add(s, m);
-                dyn_scene.add(
-                    Box::new(s) as Box<dyn Hittable<f64> + Send + Sync>,
-                    Arc::new(m) as Arc<dyn Material<f64, DefaultRng> + Send + Sync>,
-                );
+                dyn_scene.add(Box::new(s), Arc::new(m));
             }
             scene.set_acceleration(acceleration);
             dyn_scene.set_acceleration(acceleration);
@@ -401,8 +376,9 @@ fn ties_go_to_the_object_added_first_on_every_path() {
 }
 
 /// The deepest recursion allowed fits on a worker thread's stack in every scalar, even for
-/// paths that never escape (the eye inside a mirror sphere) traced in pairs; one more is a
-/// typed error, not a stack overflow.
+/// paths that never escape (the eye inside a mirror sphere): the reference renderer really
+/// recurses, one stack frame per bounce, and the batched renderer agrees with it. One more
+/// bounce is a typed error, not a stack overflow.
 #[test]
 fn the_deepest_recursion_allowed_fits_on_the_stack() {
     fn trapped<F: Float>() {
@@ -413,12 +389,20 @@ fn the_deepest_recursion_allowed_fits_on_the_stack() {
         );
         let cam = ScreenCamera::new(4, 2).unwrap();
         let deepest = RenderSettings::new(2, RenderSettings::MAX_DEPTH, 0).unwrap();
-        let r = in_pool(2, || render(&scene, &cam, &deepest).unwrap());
+        let renderer = Renderer::new(&scene, &cam).settings(deepest);
+        let reference = in_pool(2, || renderer.render_reference().unwrap());
         // Every camera ray bounces until the limit: 8 pixels × 2 samples × 1001 rays.
-        assert_eq!(r.stats.rays, 8 * 2 * u64::from(RenderSettings::MAX_DEPTH + 1));
-        let mut too_deep = deepest;
-        too_deep.max_depth += 1;
-        let err = render(&scene, &cam, &too_deep).unwrap_err().to_string();
+        assert_eq!(
+            reference.stats.rays,
+            8 * 2 * u64::from(RenderSettings::MAX_DEPTH + 1)
+        );
+        let fast = in_pool(2, || renderer.render().unwrap());
+        assert_eq!(fast.stats.rays, reference.stats.rays);
+        assert_eq!(bytes(&fast.image), bytes(&reference.image));
+        let too_deep = renderer.max_depth(RenderSettings::MAX_DEPTH + 1);
+        let err = too_deep.render().unwrap_err().to_string();
+        assert!(err.contains("max depth"), "{err}");
+        let err = too_deep.render_reference().unwrap_err().to_string();
         assert!(err.contains("max depth"), "{err}");
     }
     trapped::<f32>();

@@ -57,7 +57,7 @@ impl<F: Float> Lambertian<F> {
     }
 }
 
-impl<F: Float, R: Rng + 'static> Material<F, R> for Lambertian<F> {
+impl<F: Float, R: Rng + ?Sized> Material<F, R> for Lambertian<F> {
     #[inline]
     fn scatter(&self, _ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
         Some(Scatter {

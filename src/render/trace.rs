@@ -1,10 +1,10 @@
-//! The recursive ray colour computation.
+//! The specification's recursive trace: what one ray brings back.
 
 use crate::float::{Float, lit};
 use crate::material::Material;
 use crate::ray::Ray;
 use crate::scene::Scene;
-use crate::shape::{Hit, Hittable};
+use crate::shape::{Hit, Hittable, offset_ray_origin};
 use crate::vec3::Color;
 use rand::Rng;
 
@@ -43,6 +43,7 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
     }
 
     /// Rays traced so far (camera, scattered and shadow).
+    #[must_use]
     pub fn rays(&self) -> u64 {
         self.rays
     }
@@ -51,8 +52,13 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
     ///
     /// - it hits nothing: the background;
     /// - it hits a surface after `max_depth` bounces: black `(0, 0, 0)`;
-    /// - otherwise: the direct light from point lights (matte surfaces only) plus
-    ///   `A ∘ trace(scattered, depth + 1)`, or black if the material absorbs the ray.
+    /// - otherwise: the direct light `L_d` from point lights (matte surfaces only) plus
+    ///   the scattered ray's colour absorbed by the albedo,
+    ///   `C = L_d + A ∘ trace(scattered, depth + 1)`, or just `L_d` if the material
+    ///   absorbs the ray.
+    ///
+    /// This recursion defines every image: [`render_reference`](super::render_reference)
+    /// calls it for each sample, and the batched renderer reproduces it bit for bit.
     pub fn trace<R>(&mut self, ray: &Ray<F>, depth: u32, rng: &mut R) -> Color<F>
     where
         R: Rng + ?Sized,
@@ -64,35 +70,6 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
             Step::Done(colour) => colour,
             Step::Go(next, direct, attenuation) => {
                 saturate(direct + attenuation * self.trace(&next, depth + 1, rng))
-            }
-        }
-    }
-
-    /// [`trace`](Tracer::trace) for two independent rays side by side, drawing from one
-    /// generator (the first ray's draws at each bounce come before the second's).
-    ///
-    /// A path is one long chain of dependent steps (hit point, direction, next hit), so a
-    /// lone ray leaves the processor waiting on latencies; two independent chains
-    /// interleaved fill those waits.
-    pub fn trace_pair<R>(&mut self, a: &Ray<F>, b: &Ray<F>, depth: u32, rng: &mut R) -> (Color<F>, Color<F>)
-    where
-        R: Rng + ?Sized,
-        M: Material<F, R>,
-    {
-        self.rays += 2;
-        let (hit_a, hit_b) = (self.scene.hit(a, F::infinity()), self.scene.hit(b, F::infinity()));
-        let step_a = self.shade(a, hit_a, depth, rng);
-        let step_b = self.shade(b, hit_b, depth, rng);
-        let end = |direct: Color<F>, attenuation: Color<F>, incoming: Color<F>| {
-            saturate(direct + attenuation * incoming)
-        };
-        match (step_a, step_b) {
-            (Step::Done(ca), Step::Done(cb)) => (ca, cb),
-            (Step::Go(ra, da, aa), Step::Done(cb)) => (end(da, aa, self.trace(&ra, depth + 1, rng)), cb),
-            (Step::Done(ca), Step::Go(rb, db, ab)) => (ca, end(db, ab, self.trace(&rb, depth + 1, rng))),
-            (Step::Go(ra, da, aa), Step::Go(rb, db, ab)) => {
-                let (ia, ib) = self.trace_pair(&ra, &rb, depth + 1, rng);
-                (end(da, aa, ia), end(db, ab, ib))
             }
         }
     }
@@ -133,7 +110,7 @@ impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
         let brdf = albedo * (F::one() / lit::<F>(std::f64::consts::PI));
         let mut sum = Color::zero();
         // Shadow rays leave on the normal's side: one offset origin serves every light.
-        let origin = crate::shape::offset_ray_origin(hit.point, hit.error, hit.normal, hit.normal);
+        let origin = offset_ray_origin(hit.point, hit.error, hit.normal, hit.normal);
         for light in self.scene.lights() {
             let to_light = light.position() - origin;
             let dist2 = to_light.length_squared();

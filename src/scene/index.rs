@@ -594,7 +594,7 @@ mod tests {
     fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, u32>> {
         use crate::shape::Plane;
         use rand::{RngExt, SeedableRng};
-        let mut rng = crate::render::DefaultRng::seed_from_u64(seed);
+        let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed);
         let mut v = |s: f64| {
             Vec3::new(
                 rng.random_range(-s..s),
@@ -644,7 +644,7 @@ mod tests {
         ] {
             let objects = mixed(seed, triangles);
             let index = Index::build(&objects, acceleration);
-            let mut rng = crate::render::DefaultRng::seed_from_u64(seed + 10);
+            let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed + 10);
             let mut v = |s: f64| {
                 Vec3::new(
                     rng.random_range(-s..s),

@@ -1,0 +1,151 @@
+//! The batched form of the reference renderer: the paths of a band of pixels advance
+//! together, one bounce at a time.
+//!
+//! Traced one by one, a path is a single chain of dependent steps (hit, shade, next
+//! hit), so the processor spends most of its time waiting on latencies and mispredicted
+//! branches. The paths of different pixels are independent: intersected and shaded as a
+//! batch, consecutive iterations overlap instead of waiting.
+//!
+//! The answer is bit for bit [`render_reference`](super::render_reference)'s:
+//! - each sample draws from its own generator ([`sample_rng`]), so tracing the samples
+//!   of many pixels side by side changes no draw;
+//! - each bounce's `(direct, attenuation)` is logged, and once every path has ended the
+//!   logs are folded back from the last bounce, `c ← saturate(direct + attenuation ∘ c)`:
+//!   the recursion's own arithmetic, in its own order, for each path;
+//! - each pixel's samples are summed in the reference's order, sample 0 first.
+
+use super::RenderSettings;
+use super::reference::{camera_ray, mean, sample_rng};
+use super::trace::{Step, Tracer, saturate};
+use crate::camera::Camera;
+use crate::float::Float;
+use crate::material::Material;
+use crate::ray::Ray;
+use crate::scene::Nearests;
+use crate::shape::Hittable;
+use crate::vec3::Color;
+use rand::{Rng, SeedableRng};
+
+/// A bounce a path went on from: its pixel, the direct light and the attenuation that
+/// combine with the colour the next ray brings back.
+type Bounce<F> = (u32, Color<F>, Color<F>);
+
+/// The buffers of one band's paths, kept from band to band.
+pub(super) struct Batch<F, R> {
+    /// Each pixel's generator for the sample being traced.
+    rngs: Vec<R>,
+    /// Each pixel's sum of sample colours.
+    sums: Vec<Color<F>>,
+    /// The rays still travelling, and the pixel of each one's path.
+    rays: Vec<Ray<F>>,
+    pixels: Vec<u32>,
+    next_rays: Vec<Ray<F>>,
+    next_pixels: Vec<u32>,
+    near: Nearests<F>,
+    /// For each bounce, the paths that went on from it, in the rays' order.
+    logs: Vec<Vec<Bounce<F>>>,
+    /// Each path's colour where it ended (background, black, or its last direct light).
+    ends: Vec<Color<F>>,
+}
+
+impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
+    /// Empty buffers.
+    pub(super) fn new() -> Self {
+        Self {
+            rngs: Vec::new(),
+            sums: Vec::new(),
+            rays: Vec::new(),
+            pixels: Vec::new(),
+            next_rays: Vec::new(),
+            next_pixels: Vec::new(),
+            near: Nearests::default(),
+            logs: Vec::new(),
+            ends: Vec::new(),
+        }
+    }
+
+    /// Renders pixels into `out`, `out[i]` being pixel `at(i) = (x, y)` of the image: for
+    /// each sample in turn, one path per pixel, all traced together.
+    pub(super) fn render<S, M, C>(
+        &mut self,
+        tracer: &mut Tracer<'_, F, S, M>,
+        camera: &C,
+        settings: &RenderSettings,
+        at: impl Fn(usize) -> (usize, usize),
+        out: &mut [[f64; 3]],
+    ) where
+        S: Hittable<F>,
+        M: Material<F, R>,
+        C: Camera<F>,
+    {
+        let spp = settings.samples_per_pixel;
+        self.sums.clear();
+        self.sums.resize(out.len(), Color::zero());
+        for sample in 0..spp {
+            self.rngs.clear();
+            self.rays.clear();
+            self.pixels.clear();
+            for i in 0..out.len() {
+                let (x, y) = at(i);
+                let mut rng = sample_rng(settings, camera, x, y, sample);
+                self.rays.push(camera_ray(camera, x, y, spp, &mut rng));
+                self.rngs.push(rng);
+                self.pixels.push(i as u32);
+            }
+            self.trace(tracer);
+            for (sum, &c) in self.sums.iter_mut().zip(&self.ends) {
+                *sum = *sum + c;
+            }
+        }
+        for (o, &sum) in out.iter_mut().zip(&self.sums) {
+            *o = mean(sum, spp).to_f64();
+        }
+    }
+
+    /// Traces the started paths to their ends and leaves each pixel's colour in `ends`.
+    fn trace<S, M>(&mut self, tracer: &mut Tracer<'_, F, S, M>)
+    where
+        S: Hittable<F>,
+        M: Material<F, R>,
+    {
+        self.ends.clear();
+        self.ends.resize(self.rays.len(), Color::zero());
+        let scene = tracer.scene;
+        let mut depth = 0;
+        while !self.rays.is_empty() {
+            if self.logs.len() == depth {
+                self.logs.push(Vec::new());
+            }
+            let log = &mut self.logs[depth];
+            log.clear();
+            tracer.rays += self.rays.len() as u64;
+            self.next_rays.clear();
+            self.next_pixels.clear();
+            // Each ray is shaded as soon as its hit is known, in the rays' order.
+            let (rays, pixels) = (&self.rays, &self.pixels);
+            scene.hit_all(rays, &mut self.near, |i, hit| {
+                let pixel = pixels[i];
+                let rng = &mut self.rngs[pixel as usize];
+                match tracer.shade(&rays[i], hit, depth as u32, rng) {
+                    Step::Done(colour) => self.ends[pixel as usize] = colour,
+                    Step::Go(next, direct, attenuation) => {
+                        log.push((pixel, direct, attenuation));
+                        self.next_rays.push(next);
+                        self.next_pixels.push(pixel);
+                    }
+                }
+            });
+            std::mem::swap(&mut self.rays, &mut self.next_rays);
+            std::mem::swap(&mut self.pixels, &mut self.next_pixels);
+            depth += 1;
+        }
+        // Each path's bounces fold back from its last: bounce by bounce from the deepest,
+        // each entry updating its path's colour.
+        for log in self.logs[..depth].iter().rev() {
+            for &(pixel, direct, attenuation) in log {
+                let end = &mut self.ends[pixel as usize];
+                *end = saturate(direct + attenuation * *end);
+            }
+        }
+    }
+}

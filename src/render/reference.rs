@@ -1,0 +1,101 @@
+//! The reference renderer: every pixel, every sample, one recursion at a time. It is slow
+//! and short on purpose. It defines every image this crate makes: the fast renderer
+//! ([`Renderer::render`](super::Renderer::render)) is tested to give its bytes.
+
+use super::trace::{Tracer, saturate};
+use super::{Rect, Render, RenderSettings, RenderStats, sample_seed};
+use crate::camera::Camera;
+use crate::error::Result;
+use crate::float::{Float, lit};
+use crate::image::Image;
+use crate::material::Material;
+use crate::ray::Ray;
+use crate::sampling::pixel_jitter;
+use crate::scene::Scene;
+use crate::shape::Hittable;
+use crate::vec3::Color;
+use rand::{Rng, SeedableRng};
+use std::time::Instant;
+
+/// Renders the pixels of `tile` one after another on the calling thread, each the mean of
+/// its samples, each sample one call of the recursive [`Tracer::trace`].
+///
+/// # Errors
+/// Invalid settings, or a tile outside the camera's image.
+pub fn render_reference<R, F, S, M, C>(
+    scene: &Scene<F, S, M>,
+    camera: &C,
+    settings: &RenderSettings,
+    tile: Rect,
+) -> Result<Render>
+where
+    R: Rng + SeedableRng,
+    F: Float,
+    S: Hittable<F>,
+    M: Material<F, R>,
+    C: Camera<F>,
+{
+    settings.validate()?;
+    tile.check_inside(camera.width(), camera.height())?;
+    let start = Instant::now();
+    let mut image = Image::new(tile.width, tile.height)?;
+    let mut tracer = Tracer::new(scene, settings.max_depth);
+    for (i, out) in image.pixels_mut().iter_mut().enumerate() {
+        let (x, y) = (tile.x + i % tile.width, tile.y + i / tile.width);
+        let mut sum = Color::zero();
+        for sample in 0..settings.samples_per_pixel {
+            let mut rng: R = sample_rng(settings, camera, x, y, sample);
+            let ray = camera_ray(camera, x, y, settings.samples_per_pixel, &mut rng);
+            sum = sum + tracer.trace(&ray, 0, &mut rng);
+        }
+        *out = mean(sum, settings.samples_per_pixel).to_f64();
+    }
+    Ok(Render {
+        image,
+        stats: RenderStats {
+            rays: tracer.rays(),
+            elapsed: start.elapsed(),
+            threads: 1,
+        },
+    })
+}
+
+/// The generator of sample `sample` of pixel `(x, y)`, seeded from the render seed, the
+/// pixel's index in the **whole** image and the sample ([`sample_seed`]): never from a
+/// thread or a tile, so any split of the work gives the same image.
+#[inline]
+pub(super) fn sample_rng<R: SeedableRng, F: Float>(
+    settings: &RenderSettings,
+    camera: &impl Camera<F>,
+    x: usize,
+    y: usize,
+    sample: u32,
+) -> R {
+    let pixel = (y * camera.width() + x) as u64;
+    R::seed_from_u64(sample_seed(settings.seed, pixel, u64::from(sample)))
+}
+
+/// A sample's camera ray: with one sample per pixel through the pixel centre (the spec's
+/// basic mode), with more through a uniform random point of the pixel's cell.
+#[inline]
+pub(super) fn camera_ray<F: Float, R: Rng + ?Sized>(
+    camera: &impl Camera<F>,
+    x: usize,
+    y: usize,
+    spp: u32,
+    rng: &mut R,
+) -> Ray<F> {
+    let (x, y) = (lit::<F>(x as f64), lit::<F>(y as f64));
+    if spp == 1 {
+        return camera.ray(x, y);
+    }
+    let (dx, dy) = pixel_jitter(rng);
+    camera.ray(x + lit(dx), y + lit(dy))
+}
+
+/// A pixel's colour from the sum of its `spp` sample colours: their mean. Each sample is
+/// finite, but the sum may overflow: the mean is capped again.
+#[inline]
+pub(super) fn mean<F: Float>(sum: Color<F>, spp: u32) -> Color<F> {
+    saturate(sum / lit(f64::from(spp)))
+}
