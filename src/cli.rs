@@ -12,27 +12,10 @@
 //! --help               this text
 //! ```
 
+pub use crate::advice::Precision;
 use crate::image::Encoding;
 use std::fmt;
 use std::path::PathBuf;
-
-/// The scalar a render runs in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Precision {
-    /// Single precision.
-    F32,
-    /// Double precision.
-    F64,
-}
-
-impl fmt::Display for Precision {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Self::F32 => "f32",
-            Self::F64 => "f64",
-        })
-    }
-}
 
 /// Parsed example options.
 #[derive(Clone, Debug, PartialEq, Eq)]
