@@ -6,7 +6,7 @@
 mod common;
 mod scenes;
 
-use raytrace::cli::Options;
+use common::Options;
 
 fn main() -> std::process::ExitCode {
     common::spec_scene(

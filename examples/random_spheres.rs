@@ -7,7 +7,8 @@
 mod common;
 mod scenes;
 
-use raytrace::cli::{Options, Precision};
+use common::Options;
+use raytrace::advice::Precision;
 use raytrace::prelude::*;
 
 fn run<F: Float>(o: &Options) -> raytrace::Result<raytrace::Render> {

@@ -6,7 +6,6 @@
 //! the pixels ([`ImageError::within_one_step`]).
 
 use crate::camera::CastCamera;
-use crate::cli::Precision;
 use crate::double_double::DoubleDouble;
 use crate::error::Result;
 use crate::float::Float;
@@ -14,7 +13,26 @@ use crate::image::{Encoding, Image};
 use crate::metrics::ImageError;
 use crate::render::{RenderSettings, render};
 use crate::scene::EnumScene;
+use std::fmt;
 use std::time::Duration;
+
+/// The scalar a render runs in: what [`advise`] recommends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Precision {
+    /// Single precision (`f32`).
+    F32,
+    /// Double precision (`f64`).
+    F64,
+}
+
+impl fmt::Display for Precision {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::F32 => "f32",
+            Self::F64 => "f64",
+        })
+    }
+}
 
 /// One scalar's render of the scene, measured against the reference.
 #[derive(Clone, Copy, Debug, PartialEq)]

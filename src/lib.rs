@@ -35,7 +35,6 @@ pub mod background;
 pub mod bvh;
 pub mod camera;
 mod cast;
-pub mod cli;
 pub mod double_double;
 pub mod error;
 pub mod float;
@@ -55,7 +54,6 @@ pub mod vec3;
 
 pub use background::Background;
 pub use camera::{Camera, CastCamera, LookAtCamera, ScreenCamera};
-pub use cli::Precision;
 pub use double_double::DoubleDouble;
 pub use error::{Error, Result};
 pub use float::{Float, lit};

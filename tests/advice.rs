@@ -1,9 +1,9 @@
 //! The precision advice is measured: f32 is advised where its image matches the
 //! double-double reference, f64 where f32 visibly fails (a scene far from the origin).
 
-use raytrace::advice::advise;
+use raytrace::LookAtCamera;
+use raytrace::advice::{Precision, advise};
 use raytrace::prelude::*;
-use raytrace::{LookAtCamera, Precision};
 
 /// Mirror spheres on a mirror floor, everything moved by `offset` along each axis.
 fn mirrors(offset: f64) -> EnumScene<f64> {

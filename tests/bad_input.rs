@@ -2,8 +2,8 @@
 //! — NaN, ±∞, ±0, negatives, subnormals, the largest finite values, and random ones —
 //! returns `Ok` exactly when the input is valid and otherwise an error naming what was
 //! wrong, and never panics; the PPM reader never panics on arbitrary bytes and what it
-//! accepts is self-consistent and round-trips; the example's command-line parser never
-//! panics. Scalar constructors run for f32 and f64.
+//! accepts is self-consistent and round-trips. Scalar constructors run for f32 and f64.
+//! (The examples' command line is tested in `tests/example_options.rs`.)
 //!
 //! # The validity predicates
 //! Written here from the documented contracts, computed independently of the library
@@ -41,7 +41,6 @@ mod common;
 
 use common::config;
 use proptest::prelude::*;
-use raytrace::cli::{Command, Options};
 use raytrace::image::{MAX_PIXELS, parse_ppm, write_ppm_to};
 use raytrace::{
     Background, Dielectric, Float, Image, Image16, Lambertian, LookAtCamera, Mirror, Plane, PointLight,
@@ -840,63 +839,6 @@ proptest! {
             apply(&mut bytes, e);
         }
         check_parse(&bytes)?;
-    }
-}
-
-// ---------------------------------------------------------------------------------------
-// The command line
-// ---------------------------------------------------------------------------------------
-
-fn cli_arg() -> impl Strategy<Value = String> {
-    let key = prop::sample::select(vec![
-        "--width",
-        "--spp",
-        "--max-depth",
-        "--seed",
-        "--precision",
-        "--threads",
-        "--encoding",
-        "--out",
-        "--help",
-        "-h",
-        "--bogus",
-        "--",
-        "-",
-        "",
-        "--width=",
-    ]);
-    let value = prop_oneof![
-        3 => prop::sample::select(vec![
-            "0", "1", "800", "-3", "+5", " 5", "5 ", "f32", "f64", "F32", "srgb", "linear", "=", "",
-            "4294967296", "18446744073709551616", "99999999999999999999", "1e3", "٣",
-        ])
-        .prop_map(String::from),
-        1 => any::<u64>().prop_map(|n| n.to_string()),
-        1 => any::<String>(),
-    ];
-    prop_oneof![
-        3 => key.clone().prop_map(String::from),
-        3 => value.clone(),
-        2 => (key, value).prop_map(|(k, v)| format!("{k}={v}")),
-    ]
-}
-
-proptest! {
-    #![proptest_config(config(10_000, 0xBAD_C11, REGRESSIONS))]
-
-    /// `cli::parse` never panics, and what it returns is consistent: options it accepts are
-    /// usable (width, samples and threads at least 1), help mentions the options, and an
-    /// error points to `--help`.
-    #[test]
-    fn cli_parse_never_panics(args in prop::collection::vec(cli_arg(), 0..10)) {
-        let result = raytrace::cli::parse("demo", "A demo.", Options::defaults(800, 4, 10), args.clone());
-        match result {
-            Ok(Command::Run(o)) => {
-                prop_assert!(o.width >= 1 && o.spp >= 1 && o.threads != Some(0), "{args:?} gave {o:?}");
-            }
-            Ok(Command::Help(text)) => prop_assert!(text.contains("--width"), "{text}"),
-            Err(e) => prop_assert!(e.to_string().contains("--help"), "{args:?}: {e}"),
-        }
     }
 }
 

@@ -3,46 +3,41 @@
 
 #![allow(dead_code)]
 
-use raytrace::cli::{self, Command, Options, Precision};
+mod options;
+
+pub use options::{Example, Options};
+use raytrace::advice::Precision;
 use raytrace::image::{write_png, write_ppm};
 use raytrace::{EnumScene, Render, ScreenCamera, render};
 use std::process::ExitCode;
 use std::time::Instant;
 
-/// An example's name, one-line description and default options.
-pub struct Example {
-    /// The example's name, also the output files' stem.
-    pub name: &'static str,
-    /// What it renders.
-    pub about: &'static str,
-    /// Its default options.
-    pub defaults: Options,
+/// Parses the command line over the example's defaults; on `--help` prints the help and
+/// exits successfully, on a mistake prints it and exits with code 2.
+pub fn options(example: &Example) -> Options {
+    example
+        .try_parse_from(std::env::args_os())
+        .unwrap_or_else(|e| e.exit())
 }
 
-/// Parses the command line over the example's defaults. `Err` carries the exit code
-/// after printing the help (success) or the mistake (2).
-pub fn options(example: &Example) -> Result<Options, ExitCode> {
-    let args = std::env::args().skip(1);
-    match cli::parse(example.name, example.about, example.defaults.clone(), args) {
-        Ok(Command::Run(o)) => Ok(o),
-        Ok(Command::Help(text)) => {
-            println!("{text}");
-            Err(ExitCode::SUCCESS)
-        }
-        Err(e) => {
-            eprintln!("error: {e}");
-            Err(ExitCode::from(2))
-        }
+/// The worker threads the options ask for (all cores if they name no number).
+pub fn pool(opts: &Options) -> raytrace::Result<rayon::ThreadPool> {
+    let mut pool = rayon::ThreadPoolBuilder::new();
+    if let Some(t) = opts.threads {
+        pool = pool.num_threads(t);
     }
+    pool.build().map_err(|e| {
+        let threads = opts
+            .threads
+            .map_or_else(|| "a thread per core".into(), |t| format!("{t} threads"));
+        raytrace::Error::InvalidSettings(format!("cannot start {threads}: {e}"))
+    })
 }
 
 /// Parses the command line, renders with `render` on the requested number of threads,
 /// writes `<out>/<name>.ppm` and `.png`, and prints where they went and what it cost.
 pub fn main(example: Example, render: impl FnOnce(&Options) -> raytrace::Result<Render> + Send) -> ExitCode {
-    let opts = match options(&example) {
-        Ok(o) => o,
-        Err(code) => return code,
-    };
+    let opts = options(&example);
     match run(example.name, &opts, render) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -73,14 +68,7 @@ fn run(
     render: impl FnOnce(&Options) -> raytrace::Result<Render> + Send,
 ) -> raytrace::Result<()> {
     let start = Instant::now();
-    let mut pool = rayon::ThreadPoolBuilder::new();
-    if let Some(t) = opts.threads {
-        pool = pool.num_threads(t);
-    }
-    let pool = pool.build().map_err(|e| {
-        raytrace::Error::InvalidSettings(format!("cannot start {:?} threads: {e}", opts.threads))
-    })?;
-    let rendered = pool.install(|| render(opts))?;
+    let rendered = pool(opts)?.install(|| render(opts))?;
     let samples = rendered.image.to_u16(opts.encoding);
     std::fs::create_dir_all(&opts.out).map_err(|source| raytrace::Error::Io {
         path: opts.out.clone(),

@@ -1,9 +1,9 @@
 //! The study's SVG charts: speed against accuracy per scene, and Monte Carlo convergence.
 
 use crate::cases::Case;
+use crate::common::Options;
 use crate::{Row, scenes};
 use plotters::prelude::*;
-use raytrace::cli::Options;
 use raytrace::metrics::ImageError;
 use raytrace::{Encoding, RenderSettings, ScreenCamera, render};
 use std::fmt::Write as _;

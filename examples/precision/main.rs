@@ -17,7 +17,7 @@ mod cases;
 mod charts;
 
 use cases::{Cam, Case};
-use raytrace::cli::Options;
+use common::Options;
 use raytrace::metrics::ImageError;
 use raytrace::prelude::*;
 use raytrace::{Image, Render};
@@ -194,20 +194,8 @@ fn main() -> ExitCode {
         about,
         defaults,
     };
-    let o = match common::options(&example) {
-        Ok(o) => o,
-        Err(code) => return code,
-    };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(o.threads.unwrap_or(0))
-        .build();
-    let result = match pool {
-        Ok(pool) => pool.install(|| run(&o)),
-        Err(e) => Err(raytrace::Error::InvalidSettings(format!(
-            "cannot start threads: {e}"
-        ))),
-    };
-    match result {
+    let o = common::options(&example);
+    match common::pool(&o).and_then(|pool| pool.install(|| run(&o))) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");
