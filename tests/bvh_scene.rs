@@ -1,8 +1,9 @@
-//! A scene answers the same through its BVH as through the plain loop: same nearest hits,
-//! same shadow queries, same image bytes.
+//! A scene answers the same through its BVH as through the plain loop, and both answer as
+//! the naive loop of the definition: same nearest hits, same shadow queries, same image bytes.
 
 use rand::{RngExt, SeedableRng};
 use raytrace::prelude::*;
+use raytrace::shape::Hit;
 use raytrace::{Acceleration, DefaultRng};
 
 /// 300 random spheres of random sizes, or spheres and triangles, around the origin, plus a
@@ -49,6 +50,23 @@ fn scene<F: Float>(acceleration: Acceleration, triangles: bool) -> EnumScene<F> 
     scene
 }
 
+/// The oracle: every object's own `hit`, one by one in the order added, keeping the nearest
+/// (a later object must be strictly nearer to win a tie), and `occluded` as "any object".
+fn naive_hit<F: Float>(scene: &EnumScene<F>, ray: &Ray<F>) -> Option<(Hit<F>, MaterialKind<F>)> {
+    let mut best: Option<(Hit<F>, MaterialKind<F>)> = None;
+    for o in scene.objects() {
+        let bound = best.map_or(F::infinity(), |(h, _)| h.t);
+        if let Some(hit) = o.shape.hit(ray, bound) {
+            best = Some((hit, o.material));
+        }
+    }
+    best
+}
+
+fn naive_occluded<F: Float>(scene: &EnumScene<F>, ray: &Ray<F>, t_max: F) -> bool {
+    scene.objects().iter().any(|o| o.shape.occluded(ray, t_max))
+}
+
 fn same_queries<F: Float>(triangles: bool) {
     let linear = scene::<F>(Acceleration::Linear, triangles);
     let bvh = scene::<F>(Acceleration::Bvh, triangles);
@@ -62,9 +80,12 @@ fn same_queries<F: Float>(triangles: bool) {
         let a = linear.hit(&ray, F::infinity()).map(|(h, m)| (h, *m));
         let b = bvh.hit(&ray, F::infinity()).map(|(h, m)| (h, *m));
         assert_eq!(a, b, "{ray:?}");
+        assert_eq!(a, naive_hit(&linear, &ray), "{ray:?}");
         hits += usize::from(a.is_some());
         let t_max = lit(rng.random_range(1.0..15.0));
-        assert_eq!(linear.occluded(&ray, t_max), bvh.occluded(&ray, t_max));
+        let blocked = naive_occluded(&linear, &ray, t_max);
+        assert_eq!(linear.occluded(&ray, t_max), blocked);
+        assert_eq!(bvh.occluded(&ray, t_max), blocked);
     }
     assert!(hits > 10_000, "the rays should mostly hit something ({hits})");
 }

@@ -32,7 +32,11 @@ fn hashes<F: Float>() -> Vec<(&'static str, u64, u64)> {
         ("four_mirrors", scenes::four_mirrors().unwrap(), &spec),
         ("matte_spheres", scenes::matte_spheres().unwrap(), &spec),
         ("glass", scenes::glass().unwrap(), &spec),
-        ("plane_and_triangles", scenes::plane_and_triangles().unwrap(), &spec),
+        (
+            "plane_and_triangles",
+            scenes::plane_and_triangles().unwrap(),
+            &spec,
+        ),
         ("point_lights", scenes::point_lights().unwrap(), &spec),
         ("random_spheres", scenes::random_spheres(0).unwrap(), &look),
     ];
