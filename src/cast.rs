@@ -9,7 +9,7 @@ use crate::float::Float;
 use crate::light::PointLight;
 use crate::material::{Dielectric, Lambertian, MaterialKind, Mirror};
 use crate::scene::EnumScene;
-use crate::shape::{Plane, ShapeKind, Sphere, TextbookSphere, Triangle};
+use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
 
 /// A scalar for `x` rounded through `f64`.
 fn to<F: Float, G: Float>(x: F) -> G {
@@ -45,17 +45,7 @@ impl<F: Float> ShapeKind<F> {
             Self::Sphere(s) => s.cast()?.into(),
             Self::Plane(p) => p.cast()?.into(),
             Self::Triangle(t) => t.cast()?.into(),
-            Self::TextbookSphere(s) => TextbookSphere(s.0.cast()?).into(),
         })
-    }
-
-    /// The same shape intersected the textbook way where a naive method is kept
-    /// (spheres become [`TextbookSphere`]s); other shapes are unchanged.
-    pub fn to_textbook(&self) -> ShapeKind<F> {
-        match *self {
-            Self::Sphere(s) => TextbookSphere(s).into(),
-            other => other,
-        }
     }
 }
 
@@ -96,13 +86,6 @@ impl<F: Float> EnumScene<F> {
     /// The same scene in scalar `G` (objects, lights, background, acceleration).
     pub fn cast<G: Float>(&self) -> Result<EnumScene<G>> {
         self.try_map(|s| s.cast(), |m| m.cast())
-    }
-
-    /// The same scene with every sphere intersected the textbook way
-    /// ([`ShapeKind::to_textbook`]): the naive method, for the accuracy study.
-    pub fn to_textbook(&self) -> EnumScene<F> {
-        self.try_map(|s| Ok(s.to_textbook()), |m| Ok(*m))
-            .expect("infallible")
     }
 
     fn try_map<G: Float>(
@@ -148,12 +131,6 @@ mod tests {
         };
         assert_eq!(s.radius(), 0.5);
         assert_eq!(s.center().x, f64::from(0.1f32));
-        let textbook = scene.to_textbook();
-        assert!(matches!(
-            textbook.objects()[0].shape,
-            ShapeKind::TextbookSphere(_)
-        ));
-        assert!(matches!(textbook.objects()[1].shape, ShapeKind::Triangle(_)));
 
         let mut tiny = EnumScene::<f64>::new(Background::default());
         tiny.add(

@@ -7,7 +7,7 @@ mod sphere4;
 mod triangle;
 
 pub use plane::Plane;
-pub use sphere::{Sphere, TEXTBOOK_T_MIN, TextbookSphere, textbook_sphere_hit};
+pub use sphere::{Sphere, TEXTBOOK_T_MIN, textbook_sphere_hit};
 pub use sphere4::{LANES, Sphere4};
 pub use triangle::Triangle;
 
@@ -152,8 +152,6 @@ pub enum ShapeKind<F> {
     Plane(Plane<F>),
     /// A [`Triangle`].
     Triangle(Triangle<F>),
-    /// A sphere intersected the textbook way ([`TextbookSphere`]), for the accuracy study.
-    TextbookSphere(TextbookSphere<F>),
 }
 
 impl<F: Float> Hittable<F> for ShapeKind<F> {
@@ -163,7 +161,6 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
             Self::Sphere(s) => s.hit(ray, t_max),
             Self::Plane(p) => p.hit(ray, t_max),
             Self::Triangle(t) => t.hit(ray, t_max),
-            Self::TextbookSphere(s) => s.hit(ray, t_max),
         }
     }
     #[inline]
@@ -172,7 +169,6 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
             Self::Sphere(s) => s.occluded(ray, t_max),
             Self::Plane(p) => p.occluded(ray, t_max),
             Self::Triangle(t) => t.occluded(ray, t_max),
-            Self::TextbookSphere(s) => s.occluded(ray, t_max),
         }
     }
     #[inline]
@@ -181,7 +177,6 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
             Self::Sphere(s) => s.bounds(),
             Self::Plane(p) => p.bounds(),
             Self::Triangle(t) => t.bounds(),
-            Self::TextbookSphere(s) => s.bounds(),
         }
     }
     #[inline]
@@ -208,11 +203,5 @@ impl<F> From<Plane<F>> for ShapeKind<F> {
 impl<F> From<Triangle<F>> for ShapeKind<F> {
     fn from(t: Triangle<F>) -> Self {
         Self::Triangle(t)
-    }
-}
-
-impl<F> From<TextbookSphere<F>> for ShapeKind<F> {
-    fn from(s: TextbookSphere<F>) -> Self {
-        Self::TextbookSphere(s)
     }
 }

@@ -137,9 +137,10 @@ impl<F: Float> Hittable<F> for Sphere<F> {
     }
 }
 
-/// The textbook ray–sphere intersection (*Ray Tracing in One Weekend*), kept for the
-/// benches and the accuracy study: `a = D·D`, `b = 2f·D`, `c = f·f − r²`,
-/// `t = (−b ∓ √(b² − 4ac))/2a`, the first root in `(t_min, t_max)`.
+/// The textbook ray–sphere intersection (*Ray Tracing in One Weekend*), kept as the naive
+/// method the tests, the benches and the accuracy study compare against: `a = D·D`,
+/// `b = 2f·D`, `c = f·f − r²`, `t = (−b ∓ √(b² − 4ac))/2a`, the first root in
+/// `(t_min, t_max)`.
 ///
 /// # Precision
 /// `b² − 4ac` subtracts two numbers of size `~|f|²` to get one of size `~r²`: for a
@@ -173,23 +174,6 @@ pub fn textbook_sphere_hit<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t_min: F, t_ma
 
 /// The textbook's fixed lower bound on `t`, *Ray Tracing in One Weekend*'s `0.001`.
 pub const TEXTBOOK_T_MIN: f64 = 1e-3;
-
-/// A sphere intersected the textbook way ([`textbook_sphere_hit`] with `t_min = 0.001`
-/// and no error bound, so spawned rays start at the rounded hit point): the naive method,
-/// kept as a shape so whole scenes can be rendered with it for the accuracy study.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TextbookSphere<F>(pub Sphere<F>);
-
-impl<F: Float> Hittable<F> for TextbookSphere<F> {
-    #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        textbook_sphere_hit(&self.0, ray, crate::float::lit(TEXTBOOK_T_MIN), t_max)
-    }
-    #[inline]
-    fn bounds(&self) -> Option<Aabb<F>> {
-        self.0.bounds()
-    }
-}
 
 #[cfg(test)]
 mod tests {
