@@ -83,6 +83,12 @@ pub fn lit<F: Float>(x: f64) -> F {
     F::from_f64(x)
 }
 
+/// `x` in scalar `G`, rounded through `f64`: how every `cast` changes a value's scalar.
+#[inline]
+pub(crate) fn to<F: Float, G: Float>(x: F) -> G {
+    G::from_f64(x.to_f64())
+}
+
 /// [`Float::step_toward_each`] for `$float`, on its bits as signed integers of its width
 /// `$int` (`i32` for `f32`, `i64` for `f64`), in four lanes (the fourth idle), with
 /// bitwise selects and no branch.

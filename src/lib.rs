@@ -34,7 +34,6 @@ pub mod advice;
 pub mod background;
 pub mod bvh;
 pub mod camera;
-mod cast;
 pub mod cli;
 pub mod double_double;
 pub mod error;

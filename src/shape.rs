@@ -205,3 +205,14 @@ impl<F> From<Triangle<F>> for ShapeKind<F> {
         Self::Triangle(t)
     }
 }
+
+impl<F: Float> ShapeKind<F> {
+    /// This shape in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> crate::error::Result<ShapeKind<G>> {
+        Ok(match self {
+            Self::Sphere(s) => s.cast()?.into(),
+            Self::Plane(p) => p.cast()?.into(),
+            Self::Triangle(t) => t.cast()?.into(),
+        })
+    }
+}

@@ -1,6 +1,6 @@
 //! `Vec3<F>`: points, directions and linear RGB colours.
 
-use crate::float::{Float, lit};
+use crate::float::{Float, lit, to};
 use std::ops::{Add, Div, Index, Mul, Neg, Sub};
 
 /// A 3-vector of scalars `F`: a point, a direction, or a linear RGB colour.
@@ -154,11 +154,7 @@ impl<F: Float> Vec3<F> {
     /// Converts each component to another scalar through `f64`.
     #[inline]
     pub fn cast<G: Float>(self) -> Vec3<G> {
-        Vec3::new(
-            G::from_f64(self.x.to_f64()),
-            G::from_f64(self.y.to_f64()),
-            G::from_f64(self.z.to_f64()),
-        )
+        Vec3::new(to(self.x), to(self.y), to(self.z))
     }
 }
 

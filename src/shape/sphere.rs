@@ -3,7 +3,7 @@
 use super::{Hit, Hittable};
 use crate::aabb::Aabb;
 use crate::error::Result;
-use crate::float::Float;
+use crate::float::{Float, to};
 use crate::ray::Ray;
 use crate::validate;
 use crate::vec3::Vec3;
@@ -32,6 +32,11 @@ impl<F: Float> Sphere<F> {
     /// The radius `r`.
     pub fn radius(&self) -> F {
         self.radius
+    }
+
+    /// This sphere in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> Result<Sphere<G>> {
+        Sphere::new(self.center.cast(), to(self.radius))
     }
 
     /// Both roots of `|O + tD − C|² = r²` (unit `D`), nearer first, or `None` if the ray
