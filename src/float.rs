@@ -40,6 +40,9 @@ pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + '
     /// For finite `self`, the neighbouring representable value in the direction of `s`'s
     /// sign: [`next_up`](Float::next_up) for `s > 0`, [`next_down`](Float::next_down) for
     /// `s < 0`, `self` for `s = 0` or NaN. A non-finite `self` is returned as it is.
+    // The step helpers are trait methods, hidden, so f32 and f64 can replace them with
+    // their branch-free lanes; only `offset_ray_origin` needs them.
+    #[doc(hidden)]
     #[inline]
     fn step_toward(self, s: Self) -> Self {
         if !self.is_finite() {
@@ -55,6 +58,7 @@ pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + '
 
     /// [`step_toward`](Float::step_toward) on each of three components: `p[k]` stepped
     /// toward `s[k]`'s sign.
+    #[doc(hidden)]
     #[inline]
     fn step_toward_each(p: [Self; 3], s: [Self; 3]) -> [Self; 3] {
         [

@@ -39,7 +39,7 @@ pub mod double_double;
 pub mod error;
 pub mod float;
 pub mod image;
-pub mod lanes;
+mod lanes;
 pub mod light;
 pub mod material;
 pub mod metrics;

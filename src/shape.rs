@@ -8,7 +8,10 @@ mod triangle;
 
 pub use plane::Plane;
 pub use sphere::{Sphere, TEXTBOOK_T_MIN, textbook_sphere_hit};
-pub use sphere4::{LANES, Sphere4};
+pub(crate) use sphere4::LANES;
+// Public, hidden: only for the packet bench in benches/primitives.rs.
+#[doc(hidden)]
+pub use sphere4::Sphere4;
 pub use triangle::Triangle;
 
 use crate::aabb::Aabb;
@@ -104,8 +107,8 @@ pub trait Hittable<F: Float> {
     }
 
     /// The sphere this shape is, if it is exactly a [`Sphere`]: a scene packs those four
-    /// to a [`Sphere4`] and tests them at once, and builds the full [`Hit`] only for the
-    /// nearest.
+    /// to a packet and tests them at once (SIMD lanes), and builds the full [`Hit`] only
+    /// for the nearest.
     ///
     /// Only a concrete type can answer (`where Self: Sized` keeps the method out of the
     /// vtable): a trait object hides what it is, so a scene of `Box<dyn Hittable>` tests

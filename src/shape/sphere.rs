@@ -65,7 +65,7 @@ impl<F: Float> Sphere<F> {
     ///
     /// [`Sphere4`]: super::Sphere4
     #[inline(always)]
-    pub fn nearest_t(&self, ray: &Ray<F>) -> Option<F> {
+    pub(crate) fn nearest_t(&self, ray: &Ray<F>) -> Option<F> {
         let f = ray.origin - self.center;
         let b = f.dot(ray.direction);
         let c = f.length_squared() - self.radius * self.radius;
@@ -104,7 +104,7 @@ impl<F: Float> Sphere<F> {
     /// the bound per component is `γ(5)|p − C| + γ(1)|p|`; we use `γ(6)|p − C| + γ(2)|p|`,
     /// since the tests see the tighter bound reached to 96 % in the worst of 10⁵ rays.
     #[inline]
-    pub fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
+    pub(crate) fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
         let l = ray.at(t) - self.center;
         let len = l.length();
         let local = l * (self.radius / len);
