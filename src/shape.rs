@@ -54,6 +54,7 @@ impl<F: Float> Hit<F> {
     /// A ray leaving the hit point along the unit `direction`, its origin moved off the
     /// surface just far enough that it cannot hit the same surface again
     /// ([`offset_ray_origin`]).
+    #[must_use]
     #[inline]
     pub fn spawn(&self, direction: Vec3<F>) -> Ray<F> {
         Ray::new(
@@ -72,6 +73,7 @@ impl<F: Float> Hit<F> {
 /// This replaces the textbook's fixed `t_min = 0.001`, which is scale-blind: too large
 /// for small objects (rays skip through a tiny glass sphere) and too small far from the
 /// origin (rays re-hit their own surface, "shadow acne").
+#[must_use]
 #[inline]
 pub fn offset_ray_origin<F: Float>(p: Vec3<F>, err: Vec3<F>, n: Vec3<F>, w: Vec3<F>) -> Vec3<F> {
     let d = n.abs().dot(err);
