@@ -67,7 +67,6 @@ fn as_dyn<F: Float>(scene: &EnumScene<F>) -> DynScene<F, DefaultRng> {
             ShapeKind::Sphere(s) => Box::new(s),
             ShapeKind::Plane(p) => Box::new(p),
             ShapeKind::Triangle(t) => Box::new(t),
-            ShapeKind::TextbookSphere(s) => Box::new(s),
         };
         let material: Arc<dyn Material<F, DefaultRng> + Send + Sync> = match o.material {
             MaterialKind::Mirror(m) => Arc::new(m),

@@ -33,6 +33,7 @@ impl<F: Float> Aabb<F> {
     }
 
     /// The smallest box holding both.
+    #[must_use]
     #[inline]
     pub fn union(self, o: Self) -> Self {
         Self {

@@ -34,6 +34,14 @@ impl<F: Float> Background<F> {
         })
     }
 
+    /// This background in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> Result<Background<G>> {
+        match self {
+            Self::Solid(c) => Background::solid(c.cast()),
+            Self::Sky { horizon, zenith } => Background::sky(horizon.cast(), zenith.cast()),
+        }
+    }
+
     /// The colour seen along the unit direction `d`.
     #[inline]
     pub fn color(&self, d: Vec3<F>) -> Color<F> {

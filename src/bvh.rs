@@ -1,13 +1,13 @@
 //! A bounding volume hierarchy: binned surface-area-heuristic build, flat array layout,
-//! ordered stack traversal of one ray ([`Bvh::traverse`]) or of a whole batch at once
-//! ([`Bvh::traverse_all`]). It only indexes primitives by their boxes and groups them into
-//! leaves; the scene owns the primitives, lays out each leaf's as it likes, and tests a
-//! whole leaf in the traversal's callback.
+//! ordered stack traversal of one ray ([`Bvh::traverse`]) or, inside the crate, of a whole
+//! batch at once (the stream traversal). It only indexes primitives by their boxes and
+//! groups them into leaves; the scene owns the primitives, lays out each leaf's as it
+//! likes, and tests a whole leaf in the traversal's callback.
 
 mod stream;
 mod wide;
 
-pub use stream::{Entry, Streams};
+pub(crate) use stream::Streams;
 
 use crate::aabb::Aabb;
 use crate::float::{Float, lit};

@@ -91,6 +91,7 @@ impl Image {
     }
 
     /// The 16-bit samples of this image under `encoding` (see [`Encoding::quantize`]).
+    #[must_use]
     pub fn to_u16(&self, encoding: Encoding) -> Image16 {
         Image16 {
             width: self.width,

@@ -34,4 +34,9 @@ impl<F: Float> PointLight<F> {
     pub fn intensity(&self) -> Color<F> {
         self.intensity
     }
+
+    /// This light in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> Result<PointLight<G>> {
+        PointLight::new(self.position.cast(), self.intensity.cast())
+    }
 }

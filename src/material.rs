@@ -143,3 +143,19 @@ impl<F> From<Dielectric<F>> for MaterialKind<F> {
         Self::Dielectric(m)
     }
 }
+
+impl<F: Float> MaterialKind<F> {
+    /// This material in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> crate::error::Result<MaterialKind<G>> {
+        Ok(match self {
+            Self::Mirror(m) => Mirror::new(m.albedo().cast())?.into(),
+            Self::Lambertian(m) => Lambertian::new(m.albedo().cast())?
+                .with_sampler(m.sampler())
+                .into(),
+            Self::Dielectric(m) => Dielectric::new(crate::float::to(m.refractive_index()))?
+                .with_albedo(m.albedo().cast())?
+                .with_reflectance(m.reflectance())
+                .into(),
+        })
+    }
+}

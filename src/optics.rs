@@ -12,6 +12,7 @@ use crate::vec3::Vec3;
 /// `n` must be unit length; `d` may have any length and `|r| = |d|`.
 /// The formula is exactly symmetric in the sign of `n` and exactly homogeneous
 /// under scaling `d` by a power of two (both are tested bit for bit).
+#[must_use]
 #[inline]
 pub fn reflect<F: Float>(d: Vec3<F>, n: Vec3<F>) -> Vec3<F> {
     d - n * (lit::<F>(2.0) * d.dot(n))
@@ -27,6 +28,7 @@ pub fn reflect<F: Float>(d: Vec3<F>, n: Vec3<F>) -> Vec3<F> {
 /// # Precision
 /// `cos θ₁` is clamped to `[0, 1]` so a normal whose squared length rounds above 1
 /// cannot produce a negative radicand or NaN at normal incidence.
+#[must_use]
 #[inline]
 pub fn refract<F: Float>(d: Vec3<F>, n: Vec3<F>, eta: F) -> Option<Vec3<F>> {
     let cos_i = (-d.dot(n)).max(F::zero()).min(F::one());

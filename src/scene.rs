@@ -88,7 +88,6 @@ impl<F: Float> EnumScene<F> {
                 ShapeKind::Sphere(s) => Box::new(s),
                 ShapeKind::Plane(p) => Box::new(p),
                 ShapeKind::Triangle(t) => Box::new(t),
-                ShapeKind::TextbookSphere(s) => Box::new(s),
             };
             let material: SharedMaterial<F, R> = match o.material {
                 MaterialKind::Mirror(m) => Arc::new(m).into(),
@@ -198,5 +197,67 @@ impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
     #[inline]
     pub fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
         self.index().occluded(&self.objects, ray, t_max)
+    }
+}
+
+impl<F: Float> EnumScene<F> {
+    /// The same scene in scalar `G` (objects, lights, background, acceleration): build a
+    /// scene once (in `f64`, say) and render it in `f32`, `f64` or double-double.
+    ///
+    /// Every value is rounded through `f64` and re-validated by its constructor, so a value
+    /// that does not survive the rounding (a radius that underflows to 0, a triangle that
+    /// becomes degenerate) is an error, not a silently different scene. The `cast` of each
+    /// part (shapes, materials, lights, background) works the same way.
+    pub fn cast<G: Float>(&self) -> crate::error::Result<EnumScene<G>> {
+        let mut out = EnumScene::new(self.background.cast()?);
+        out.set_acceleration(self.acceleration);
+        for o in &self.objects {
+            out.add(o.shape.cast()?, o.material.cast()?);
+        }
+        for l in &self.lights {
+            out.add_light(l.cast()?);
+        }
+        Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::material::{Dielectric, Mirror};
+    use crate::shape::{Sphere, Triangle};
+    use crate::vec3::Vec3;
+
+    #[test]
+    fn cast_round_trip_and_rounding_failures() {
+        let mut scene = EnumScene::<f64>::new(Background::default());
+        scene.add(
+            Sphere::new(Vec3::new(0.1, 0.2, -3.0), 0.5).unwrap(),
+            Mirror::new(Vec3::splat(0.5)).unwrap(),
+        );
+        scene.add(
+            Triangle::new(Vec3::zero(), Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)).unwrap(),
+            Dielectric::new(1.5).unwrap(),
+        );
+        scene.add_light(PointLight::new(Vec3::new(0.0, 5.0, 0.0), Vec3::splat(3.0)).unwrap());
+        let single: EnumScene<f32> = scene.cast().unwrap();
+        let back: EnumScene<f64> = single.cast().unwrap();
+        assert_eq!(back.objects().len(), 2);
+        assert_eq!(back.lights().len(), 1);
+        let ShapeKind::Sphere(s) = back.objects()[0].shape else {
+            panic!()
+        };
+        assert_eq!(s.radius(), 0.5);
+        assert_eq!(s.center().x, f64::from(0.1f32));
+
+        let mut tiny = EnumScene::<f64>::new(Background::default());
+        tiny.add(
+            Sphere::new(Vec3::zero(), 1e-50).unwrap(),
+            Mirror::new(Vec3::splat(0.5)).unwrap(),
+        );
+        assert!(
+            tiny.cast::<f32>().is_err(),
+            "a radius that underflows in f32 is an error"
+        );
     }
 }

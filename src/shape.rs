@@ -7,8 +7,11 @@ mod sphere4;
 mod triangle;
 
 pub use plane::Plane;
-pub use sphere::{Sphere, TEXTBOOK_T_MIN, TextbookSphere, textbook_sphere_hit};
-pub use sphere4::{LANES, Sphere4};
+pub use sphere::{Sphere, TEXTBOOK_T_MIN, textbook_sphere_hit};
+pub(crate) use sphere4::LANES;
+// Public, hidden: only for the packet bench in benches/primitives.rs.
+#[doc(hidden)]
+pub use sphere4::Sphere4;
 pub use triangle::Triangle;
 
 use crate::aabb::Aabb;
@@ -51,6 +54,7 @@ impl<F: Float> Hit<F> {
     /// A ray leaving the hit point along the unit `direction`, its origin moved off the
     /// surface just far enough that it cannot hit the same surface again
     /// ([`offset_ray_origin`]).
+    #[must_use]
     #[inline]
     pub fn spawn(&self, direction: Vec3<F>) -> Ray<F> {
         Ray::new(
@@ -69,6 +73,7 @@ impl<F: Float> Hit<F> {
 /// This replaces the textbook's fixed `t_min = 0.001`, which is scale-blind: too large
 /// for small objects (rays skip through a tiny glass sphere) and too small far from the
 /// origin (rays re-hit their own surface, "shadow acne").
+#[must_use]
 #[inline]
 pub fn offset_ray_origin<F: Float>(p: Vec3<F>, err: Vec3<F>, n: Vec3<F>, w: Vec3<F>) -> Vec3<F> {
     let d = n.abs().dot(err);
@@ -104,8 +109,8 @@ pub trait Hittable<F: Float> {
     }
 
     /// The sphere this shape is, if it is exactly a [`Sphere`]: a scene packs those four
-    /// to a [`Sphere4`] and tests them at once, and builds the full [`Hit`] only for the
-    /// nearest.
+    /// to a packet and tests them at once (SIMD lanes), and builds the full [`Hit`] only
+    /// for the nearest.
     ///
     /// Only a concrete type can answer (`where Self: Sized` keeps the method out of the
     /// vtable): a trait object hides what it is, so a scene of `Box<dyn Hittable>` tests
@@ -160,8 +165,6 @@ pub enum ShapeKind<F> {
     Plane(Plane<F>),
     /// A [`Triangle`].
     Triangle(Triangle<F>),
-    /// A sphere intersected the textbook way ([`TextbookSphere`]), for the accuracy study.
-    TextbookSphere(TextbookSphere<F>),
 }
 
 impl<F: Float> Hittable<F> for ShapeKind<F> {
@@ -171,7 +174,6 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
             Self::Sphere(s) => s.hit(ray, t_max),
             Self::Plane(p) => p.hit(ray, t_max),
             Self::Triangle(t) => t.hit(ray, t_max),
-            Self::TextbookSphere(s) => s.hit(ray, t_max),
         }
     }
     #[inline]
@@ -180,7 +182,6 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
             Self::Sphere(s) => s.occluded(ray, t_max),
             Self::Plane(p) => p.occluded(ray, t_max),
             Self::Triangle(t) => t.occluded(ray, t_max),
-            Self::TextbookSphere(s) => s.occluded(ray, t_max),
         }
     }
     #[inline]
@@ -189,7 +190,6 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
             Self::Sphere(s) => s.bounds(),
             Self::Plane(p) => p.bounds(),
             Self::Triangle(t) => t.bounds(),
-            Self::TextbookSphere(s) => s.bounds(),
         }
     }
     #[inline]
@@ -219,8 +219,13 @@ impl<F> From<Triangle<F>> for ShapeKind<F> {
     }
 }
 
-impl<F> From<TextbookSphere<F>> for ShapeKind<F> {
-    fn from(s: TextbookSphere<F>) -> Self {
-        Self::TextbookSphere(s)
+impl<F: Float> ShapeKind<F> {
+    /// This shape in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> crate::error::Result<ShapeKind<G>> {
+        Ok(match self {
+            Self::Sphere(s) => s.cast()?.into(),
+            Self::Plane(p) => p.cast()?.into(),
+            Self::Triangle(t) => t.cast()?.into(),
+        })
     }
 }

@@ -1,6 +1,6 @@
 //! `Vec3<F>`: points, directions and linear RGB colours.
 
-use crate::float::{Float, lit};
+use crate::float::{Float, lit, to};
 use std::ops::{Add, Div, Index, Mul, Neg, Sub};
 
 /// A 3-vector of scalars `F`: a point, a direction, or a linear RGB colour.
@@ -58,6 +58,7 @@ impl<F: Float> Vec3<F> {
     }
 
     /// `a×b`, right-handed.
+    #[must_use]
     #[inline]
     pub fn cross(self, o: Self) -> Self {
         Self::new(
@@ -84,6 +85,7 @@ impl<F: Float> Vec3<F> {
     /// # Panics
     /// In debug builds, if `v` is zero or not finite; use [`Vec3::try_normalize`]
     /// where that can happen.
+    #[must_use]
     #[inline]
     pub fn normalize(self) -> Self {
         let len = self.length();
@@ -95,6 +97,7 @@ impl<F: Float> Vec3<F> {
     ///
     /// Vectors whose `|v|²` overflows or underflows are first divided by their largest
     /// component, so every finite non-zero vector normalises.
+    #[must_use]
     #[inline]
     pub fn try_normalize(self) -> Option<Self> {
         let len2 = self.length_squared();
@@ -110,18 +113,21 @@ impl<F: Float> Vec3<F> {
     }
 
     /// Component-wise absolute value.
+    #[must_use]
     #[inline]
     pub fn abs(self) -> Self {
         Self::new(self.x.abs(), self.y.abs(), self.z.abs())
     }
 
     /// Component-wise minimum.
+    #[must_use]
     #[inline]
     pub fn min(self, o: Self) -> Self {
         Self::new(self.x.min(o.x), self.y.min(o.y), self.z.min(o.z))
     }
 
     /// Component-wise maximum.
+    #[must_use]
     #[inline]
     pub fn max(self, o: Self) -> Self {
         Self::new(self.x.max(o.x), self.y.max(o.y), self.z.max(o.z))
@@ -146,19 +152,17 @@ impl<F: Float> Vec3<F> {
     }
 
     /// Applies `f` to each component.
+    #[must_use]
     #[inline]
     pub fn map(self, f: impl Fn(F) -> F) -> Self {
         Self::new(f(self.x), f(self.y), f(self.z))
     }
 
     /// Converts each component to another scalar through `f64`.
+    #[must_use]
     #[inline]
     pub fn cast<G: Float>(self) -> Vec3<G> {
-        Vec3::new(
-            G::from_f64(self.x.to_f64()),
-            G::from_f64(self.y.to_f64()),
-            G::from_f64(self.z.to_f64()),
-        )
+        Vec3::new(to(self.x), to(self.y), to(self.z))
     }
 }
 

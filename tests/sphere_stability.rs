@@ -22,14 +22,19 @@
 //!   the surface (a thousandth of the radius: a pixel on a sphere 1000 pixels wide).
 
 mod common;
+#[path = "../examples/precision/textbook.rs"]
+mod textbook;
 
 use common::*;
 use proptest::prelude::*;
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use raytrace::shape::{TEXTBOOK_T_MIN, textbook_sphere_hit};
-use raytrace::{Float, Hit, Hittable, Ray, Sphere, Vec3, lit};
+use raytrace::{
+    Background, EnumScene, Float, Hit, Hittable, Mirror, PointLight, Ray, Sphere, Triangle, Vec3, lit,
+};
 use std::f64::consts::TAU;
+use textbook::StudyShape;
 use twofloat::TwoFloat;
 
 const REGRESSIONS: &str = "proptest-regressions/sphere_stability.txt";
@@ -305,6 +310,45 @@ fn far_small_spheres_f64() {
         &[1e7, 1e8],
         &[(1e8, 0.1)],
         &[1e2, 1e3, 1e4, 1e5],
+    );
+}
+
+/// The accuracy study renders whole scenes with the textbook method
+/// (`examples/precision/textbook.rs`): its scenes keep every other shape, the materials
+/// and the lights, and test each sphere the textbook way, not the stable way (f32, ratio
+/// 10⁴, where the two differ on nearly every ray).
+#[test]
+fn study_scenes_use_the_textbook_method() {
+    let mirror = Mirror::new(Vec3::splat(0.5)).unwrap();
+    let p = |x, y, z| Vec3::new(x, y, z);
+    let tri = Triangle::new(p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)).unwrap();
+    let light = PointLight::new(p(0.0, 5.0, 0.0), Vec3::splat(3.0)).unwrap();
+    let mut scene = EnumScene::<f32>::new(Background::default());
+    scene.add(Sphere::new(p(0.0, 0.0, -3.0), 0.5).unwrap(), mirror);
+    scene.add(tri, mirror).add_light(light);
+    let study = textbook::to_textbook(&scene);
+    assert!(matches!(study.objects()[0].shape, StudyShape::Textbook(_)));
+    assert_eq!(study.objects()[1].shape, StudyShape::Kind(tri.into()));
+    assert_eq!(study.objects()[1].material, mirror.into());
+    assert_eq!(study.lights(), scene.lights());
+    assert_eq!(study.background(), scene.background());
+
+    let mut rng = Xoshiro256PlusPlus::seed_from_u64(0x5F_1000);
+    let mut differ = 0;
+    for _ in 0..100 {
+        let case = far_case::<f32>(1e4, &mut rng);
+        let mut scene = EnumScene::<f32>::new(Background::default());
+        scene.add(case.sphere, mirror);
+        let study = textbook::to_textbook(&scene);
+        let naive = textbook_sphere_hit(&case.sphere, &case.ray, lit(TEXTBOOK_T_MIN), f32::INFINITY);
+        let got = study.hit(&case.ray, f32::INFINITY).map(|(h, _)| h);
+        assert_eq!(got, naive, "{case:?}");
+        let stable = scene.hit(&case.ray, f32::INFINITY).map(|(h, _)| h.t);
+        differ += usize::from(stable != naive.map(|h| h.t));
+    }
+    assert!(
+        differ >= 90,
+        "the stable method finds another t on only {differ} of 100 rays"
     );
 }
 

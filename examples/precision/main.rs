@@ -15,6 +15,7 @@ mod scenes;
 
 mod cases;
 mod charts;
+mod textbook;
 
 use cases::{Cam, Case};
 use common::Options;
@@ -42,16 +43,24 @@ pub struct Row {
 
 /// Renders `case` in scalar `F`, with the textbook spheres if asked.
 fn render_case<F: Float>(case: &Case, textbook: bool, seed: u64) -> raytrace::Result<Render> {
-    let scene = if textbook {
-        case.scene.to_textbook()
+    let scene = case.scene.cast::<F>()?;
+    if textbook {
+        render_scene(case, &textbook::to_textbook(&scene), seed)
     } else {
-        case.scene.clone()
-    };
-    let scene = scene.cast::<F>()?;
+        render_scene(case, &scene, seed)
+    }
+}
+
+/// Renders `scene`, a case's scene in scalar `F`, with the case's camera and settings.
+fn render_scene<F: Float, S: Hittable<F> + Sync>(
+    case: &Case,
+    scene: &Scene<F, S, MaterialKind<F>>,
+    seed: u64,
+) -> raytrace::Result<Render> {
     let settings = RenderSettings::new(case.spp, case.max_depth, seed)?;
     match case.camera {
-        Cam::Screen(c) => render(&scene, &c, &settings),
-        Cam::LookAt(c) => render(&scene, &c.cast::<F>(), &settings),
+        Cam::Screen(c) => render(scene, &c, &settings),
+        Cam::LookAt(c) => render(scene, &c.cast::<F>(), &settings),
     }
 }
 

@@ -38,13 +38,12 @@ struct Prepared<F> {
 /// No entry distance goes with it. A ray whose nearest hit has moved before a box it
 /// entered still reaches that box's node, but enters none of its children: their boxes
 /// lie inside the node's, so they start no nearer, and each test is clipped to the ray's
-/// reach. Without the distances a node writes half as much per ray (`random_spheres`:
-/// 1081 → 1017 instructions per ray).
-pub type Entry = u32;
+/// reach. Without the distances a node writes half as much per ray.
+pub(crate) type Entry = u32;
 
 /// Buffers for [`Bvh::traverse_all`], kept from batch to batch.
 #[derive(Clone, Debug, Default)]
-pub struct Streams<F> {
+pub(crate) struct Streams<F> {
     prepared: Vec<Prepared<F>>,
     /// The rays of each direction octant.
     octants: [Vec<Entry>; 8],
@@ -77,7 +76,7 @@ impl<F: Float> Bvh<F> {
     /// callback lowers as it finds hits. A leaf's callback gets the rays whose entry into
     /// its box was within reach when the leaf's parent was tested: a ray may since have
     /// found a hit nearer than the box, and the callback must keep the nearer hit.
-    pub fn traverse_all(
+    pub(crate) fn traverse_all(
         &self,
         rays: &[Ray<F>],
         t_max: &mut [F],

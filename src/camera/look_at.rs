@@ -77,6 +77,7 @@ impl<F: Float> LookAtCamera<F> {
 
 impl<F: Float> LookAtCamera<F> {
     /// The same camera in scalar `G` (its frame rounded through `f64`).
+    #[must_use]
     pub fn cast<G: Float>(&self) -> LookAtCamera<G> {
         LookAtCamera {
             width: self.width,

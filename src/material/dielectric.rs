@@ -69,6 +69,7 @@ impl<F: Float> Dielectric<F> {
     }
 
     /// The same material computing its reflectance by `reflectance`.
+    #[must_use]
     pub fn with_reflectance(self, reflectance: Reflectance) -> Self {
         Self { reflectance, ..self }
     }

@@ -42,6 +42,7 @@ impl<F: Float> Lambertian<F> {
     }
 
     /// The same surface drawing its directions with `sampler`.
+    #[must_use]
     pub fn with_sampler(self, sampler: CosineSampler) -> Self {
         Self { sampler, ..self }
     }

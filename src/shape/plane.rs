@@ -39,6 +39,11 @@ impl<F: Float> Plane<F> {
         self.normal
     }
 
+    /// This plane in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> Result<Plane<G>> {
+        Plane::new(self.point.cast(), self.normal.cast())
+    }
+
     /// The ray parameter of the hit, `t = ((P₀ − O)·n) / (D·n)`, if it lies in
     /// `(0, t_max)` and `t > 0` is certain despite rounding.
     ///

@@ -3,7 +3,7 @@
 use super::{Hit, Hittable};
 use crate::aabb::Aabb;
 use crate::error::Result;
-use crate::float::Float;
+use crate::float::{Float, to};
 use crate::ray::Ray;
 use crate::validate;
 use crate::vec3::Vec3;
@@ -34,6 +34,11 @@ impl<F: Float> Sphere<F> {
         self.radius
     }
 
+    /// This sphere in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> Result<Sphere<G>> {
+        Sphere::new(self.center.cast(), to(self.radius))
+    }
+
     /// Both roots of `|O + tD − C|² = r²` (unit `D`), nearer first, or `None` if the ray
     /// misses the sphere's carrier.
     ///
@@ -60,7 +65,7 @@ impl<F: Float> Sphere<F> {
     ///
     /// [`Sphere4`]: super::Sphere4
     #[inline(always)]
-    pub fn nearest_t(&self, ray: &Ray<F>) -> Option<F> {
+    pub(crate) fn nearest_t(&self, ray: &Ray<F>) -> Option<F> {
         let f = ray.origin - self.center;
         let b = f.dot(ray.direction);
         let c = f.length_squared() - self.radius * self.radius;
@@ -99,7 +104,7 @@ impl<F: Float> Sphere<F> {
     /// the bound per component is `γ(5)|p − C| + γ(1)|p|`; we use `γ(6)|p − C| + γ(2)|p|`,
     /// since the tests see the tighter bound reached to 96 % in the worst of 10⁵ rays.
     #[inline]
-    pub fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
+    pub(crate) fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
         let l = ray.at(t) - self.center;
         let len = l.length();
         let local = l * (self.radius / len);
@@ -137,9 +142,10 @@ impl<F: Float> Hittable<F> for Sphere<F> {
     }
 }
 
-/// The textbook ray–sphere intersection (*Ray Tracing in One Weekend*), kept for the
-/// benches and the accuracy study: `a = D·D`, `b = 2f·D`, `c = f·f − r²`,
-/// `t = (−b ∓ √(b² − 4ac))/2a`, the first root in `(t_min, t_max)`.
+/// The textbook ray–sphere intersection (*Ray Tracing in One Weekend*), kept as the naive
+/// method the tests, the benches and the accuracy study compare against: `a = D·D`,
+/// `b = 2f·D`, `c = f·f − r²`, `t = (−b ∓ √(b² − 4ac))/2a`, the first root in
+/// `(t_min, t_max)`.
 ///
 /// # Precision
 /// `b² − 4ac` subtracts two numbers of size `~|f|²` to get one of size `~r²`: for a
@@ -173,23 +179,6 @@ pub fn textbook_sphere_hit<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t_min: F, t_ma
 
 /// The textbook's fixed lower bound on `t`, *Ray Tracing in One Weekend*'s `0.001`.
 pub const TEXTBOOK_T_MIN: f64 = 1e-3;
-
-/// A sphere intersected the textbook way ([`textbook_sphere_hit`] with `t_min = 0.001`
-/// and no error bound, so spawned rays start at the rounded hit point): the naive method,
-/// kept as a shape so whole scenes can be rendered with it for the accuracy study.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TextbookSphere<F>(pub Sphere<F>);
-
-impl<F: Float> Hittable<F> for TextbookSphere<F> {
-    #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        textbook_sphere_hit(&self.0, ray, crate::float::lit(TEXTBOOK_T_MIN), t_max)
-    }
-    #[inline]
-    fn bounds(&self) -> Option<Aabb<F>> {
-        self.0.bounds()
-    }
-}
 
 #[cfg(test)]
 mod tests {

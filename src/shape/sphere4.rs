@@ -3,7 +3,7 @@
 use super::Sphere;
 use crate::float::Float;
 use crate::lanes::F4;
-pub use crate::lanes::LANES;
+pub(crate) use crate::lanes::LANES;
 use crate::ray::Ray;
 
 /// Up to four spheres in structure-of-arrays layout (`cx[lane]`, `cy[lane]`, …), so one ray
@@ -52,7 +52,7 @@ impl<F: Float> Sphere4<F> {
     /// otherwise all lanes are computed and the misses masked at the end (a negative `Δ`
     /// gives a NaN root).
     #[inline(always)]
-    pub fn hits(&self, ray: &Ray<F>) -> F4<F> {
+    pub(crate) fn hits(&self, ray: &Ray<F>) -> F4<F> {
         let (o, d) = (ray.origin, ray.direction);
         let (dx, dy, dz) = (F4::splat(d.x), F4::splat(d.y), F4::splat(d.z));
         let fx = F4::splat(o.x) - self.cx;

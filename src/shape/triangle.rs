@@ -86,6 +86,11 @@ impl<F: Float> Triangle<F> {
         self.normal
     }
 
+    /// This triangle in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains (it may become degenerate).
+    pub fn cast<G: Float>(&self) -> Result<Triangle<G>> {
+        Triangle::new(self.a.cast(), self.b.cast(), self.c.cast())
+    }
+
     /// The ray parameter `t ∈ (0, t_max)` of the hit and its barycentric coordinates
     /// `[b₀, b₁, b₂]` (weights of `A`, `B`, `C`; each `≥ 0`, summing to 1 within
     /// rounding), or `None`.

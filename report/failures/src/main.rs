@@ -24,6 +24,9 @@ mod scenes;
 #[path = "../../../examples/precision/cases.rs"]
 mod cases;
 
+#[path = "../../../examples/precision/textbook.rs"]
+mod textbook;
+
 use cases::{Cam, Case};
 use raytrace::metrics::ImageError;
 use raytrace::prelude::*;
@@ -49,16 +52,23 @@ impl<F: Float> Hittable<F> for NoTMinSphere<F> {
 
 /// One render of a case, by scalar and method.
 fn render_case<F: Float>(case: &Case, textbook: bool) -> raytrace::Result<Image> {
-    let scene = if textbook {
-        case.scene.to_textbook()
+    let scene = case.scene.cast::<F>()?;
+    if textbook {
+        render_scene(case, &textbook::to_textbook(&scene))
     } else {
-        case.scene.clone()
-    };
-    let scene = scene.cast::<F>()?;
+        render_scene(case, &scene)
+    }
+}
+
+/// Renders `scene`, a case's scene in scalar `F`, with the case's camera and settings.
+fn render_scene<F: Float, S: Hittable<F> + Sync>(
+    case: &Case,
+    scene: &Scene<F, S, MaterialKind<F>>,
+) -> raytrace::Result<Image> {
     let settings = RenderSettings::new(case.spp, case.max_depth, SEED)?;
     Ok(match case.camera {
-        Cam::Screen(c) => render(&scene, &c, &settings)?.image,
-        Cam::LookAt(c) => render(&scene, &c.cast::<F>(), &settings)?.image,
+        Cam::Screen(c) => render(scene, &c, &settings)?.image,
+        Cam::LookAt(c) => render(scene, &c.cast::<F>(), &settings)?.image,
     })
 }
 
