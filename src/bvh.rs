@@ -24,8 +24,8 @@ const BINS: usize = 16;
 const MEDIAN_DEPTH: usize = 40;
 /// Cost of visiting a node, relative to testing one leaf. A leaf of up to four spheres
 /// is one packet test, so the SAH costs a leaf `⌈N/4⌉` and a subtree of `N` primitives
-/// `N/4` (MacDonald & Booth's linear estimate, in packets). Measured on the
-/// random-spheres scene (`render` bench, `bvh-cost`): ½ was fastest, ¼ and 1 within 3 %.
+/// `N/4` (MacDonald & Booth's linear estimate, in packets). On the random-spheres scene ½
+/// was fastest, ¼ and 1 within 3 % (`docs/PERFORMANCE.md`).
 const TRAVERSAL_COST: f64 = 0.5;
 
 /// One node of the flattened binary tree the build makes (32 bytes in f32). An interior

@@ -59,12 +59,10 @@ pub enum Acceleration {
 impl Acceleration {
     /// The bounded-object count from which [`Acceleration::Auto`] builds a BVH.
     ///
-    /// Measured by the `render` bench (`bvh-threshold`, one thread, 160×80, 2 spp, f32,
-    /// rows rendered as batches): the plain loop is faster up to 12 random small spheres
-    /// (1.44 against 1.51 ms) and the BVH from 16 (1.43 against 1.77 ms; 2.7 against
-    /// 4.4 ms at 64). On the spec's scenes the loop wins (`bvh-or-loop-spec-scenes`:
-    /// `four_mirrors` 2.47 against 2.96 ms, `matte_spheres` 3.53 against 3.69 ms, with the
-    /// floor tested in the loop either way), so they pay nothing for a hierarchy.
+    /// Chosen by the `render` bench's `bvh-threshold-160x80-2spp` group: the plain loop
+    /// is faster up to 12 random small spheres, the BVH from 16; on the spec's scenes
+    /// (`bvh-or-loop-spec-scenes-160x80-2spp`) the loop wins, so they pay nothing for a
+    /// hierarchy. The figures are in `docs/PERFORMANCE.md`.
     pub const AUTO_THRESHOLD: usize = 16;
 }
 

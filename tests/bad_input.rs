@@ -1,4 +1,4 @@
-//! Bad input (issue 4, item 6): every constructor of a scene value, given arbitrary values
+//! Bad input: every constructor of a scene value, given arbitrary values
 //! — NaN, ±∞, ±0, negatives, subnormals, the largest finite values, and random ones —
 //! returns `Ok` exactly when the input is valid and otherwise an error naming what was
 //! wrong, and never panics; the PPM reader never panics on arbitrary bytes and what it

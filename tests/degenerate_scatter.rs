@@ -1,4 +1,4 @@
-//! Where scattering directions cancel or graze (issue 4, item 5): the degenerate
+//! Where scattering directions cancel or graze: the degenerate
 //! Lambertian direction and grazing mirror reflection, in f32 and f64.
 //!
 //! # The degenerate Lambertian direction

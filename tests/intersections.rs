@@ -1,4 +1,4 @@
-//! Intersections checked against exact geometry (issue 4, item 4), as property tests
+//! Intersections checked against exact geometry, as property tests
 //! written once and run for f32 and f64 with fixed proptest seeds.
 //!
 //! Every reference value is computed in double-double ([`TwoFloat`], ~106 bits) from the

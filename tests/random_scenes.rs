@@ -1,12 +1,11 @@
-//! Renders of randomly generated valid scenes (issue 4, item 5, last point): no NaN or
+//! Renders of randomly generated valid scenes: no NaN or
 //! infinite pixel and no negative channel, ever; and energy conservation where the scene
 //! has no light source brighter than 1. Each property runs for f32 and f64 with a fixed
 //! proptest seed.
 //!
 //! # The scenes
-//! One to twelve objects (so both the plain loop and the BVH, which [`Acceleration::Auto`]
-//! builds from eight bounded objects, are used; the acceleration is also forced either
-//! way): spheres of radius `10^U(−4, 4)` through a point near the camera (from specks to
+//! One to twelve objects, intersected through `Auto`, the plain loop or a forced BVH
+//! (with fewer than [`Acceleration::AUTO_THRESHOLD`] bounded objects `Auto` loops): spheres of radius `10^U(−4, 4)` through a point near the camera (from specks to
 //! walls, and now and then a sphere that swallows the camera),
 //! planes through any point with any normal, and triangles of size `10^U(−4, 2)`, all near
 //! the camera (positions in `[−6, 6]² × [−14, 4]`). Materials: mirror, matte and glass;

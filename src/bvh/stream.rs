@@ -22,7 +22,7 @@ use crate::ray::Ray;
 
 /// A node reached by this many rays or fewer is searched by each ray alone, nearest
 /// child first (the stream's overhead per node outweighs its overlap).
-const ALONE: usize = 4;
+const FEW_RAYS: usize = 4;
 
 /// A ray as the slab test needs it: origin, reciprocal direction, and the reciprocal
 /// grown for the far faces (see [`crate::aabb::RayBoxTest`]).
@@ -33,20 +33,21 @@ struct Prepared<F> {
     inv_far: [F; 3],
 }
 
-/// A ray of the batch that has reached a node: its index in the batch.
+/// A ray of the batch that has reached a node is listed by its index in the batch alone
+/// (`u32`, called `RayIndex` below).
 ///
 /// No entry distance goes with it. A ray whose nearest hit has moved before a box it
 /// entered still reaches that box's node, but enters none of its children: their boxes
 /// lie inside the node's, so they start no nearer, and each test is clipped to the ray's
 /// reach. Without the distances a node writes half as much per ray.
-pub(crate) type Entry = u32;
+pub(crate) type RayIndex = u32;
 
 /// Buffers for [`Bvh::traverse_all`], kept from batch to batch.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Streams<F> {
     prepared: Vec<Prepared<F>>,
     /// The rays of each direction octant.
-    octants: [Vec<Entry>; 8],
+    octants: [Vec<RayIndex>; 8],
     /// One for each level of the tree.
     levels: Vec<Level>,
     /// The stack of a ray searching a subtree alone.
@@ -59,7 +60,7 @@ const CHUNK: usize = 64;
 /// A level's buffers: the rays of a chunk entering each of the node's four children.
 #[derive(Clone, Debug)]
 struct Level {
-    children: [[Entry; CHUNK]; 4],
+    children: [[RayIndex; CHUNK]; 4],
 }
 
 impl Default for Level {
@@ -81,7 +82,7 @@ impl<F: Float> Bvh<F> {
         rays: &[Ray<F>],
         t_max: &mut [F],
         streams: &mut Streams<F>,
-        mut leaf: impl FnMut(usize, &[Entry], &mut [F]),
+        mut leaf: impl FnMut(usize, &[RayIndex], &mut [F]),
     ) {
         debug_assert_eq!(rays.len(), t_max.len());
         let Some(root) = self.root else { return };
@@ -143,7 +144,7 @@ struct Walk<'w, F, L> {
     leaf: &'w mut L,
 }
 
-impl<F: Float, L: FnMut(usize, &[Entry], &mut [F])> Walk<'_, F, L> {
+impl<F: Float, L: FnMut(usize, &[RayIndex], &mut [F])> Walk<'_, F, L> {
     /// Tests wide node `i` against the rays `list` of direction octant `octant`, then
     /// walks its children near to far along the octant with the rays entering each.
     ///
@@ -151,8 +152,8 @@ impl<F: Float, L: FnMut(usize, &[Entry], &mut [F])> Walk<'_, F, L> {
     /// nothing, and each child's rays are gathered by writing every ray to its list and
     /// counting only those whose lane's comparison holds. (Branching on each ray's lanes
     /// mispredicts about half of them.)
-    fn node(&mut self, i: u32, list: &[Entry], octant: usize, levels: &mut [Level]) {
-        if list.len() <= ALONE {
+    fn node(&mut self, i: u32, list: &[RayIndex], octant: usize, levels: &mut [Level]) {
+        if list.len() <= FEW_RAYS {
             for &r in list {
                 let ri = r as usize;
                 let (leaf, t_max) = (&mut *self.leaf, &mut *self.t_max);

@@ -62,7 +62,11 @@ impl<F: Float> Nearests<F> {
         Nearest {
             t,
             id: if id == NONE { 0 } else { id },
-            found: if id == NONE { Found::Nothing } else { Found::Sphere },
+            found: if id == NONE {
+                Found::Nothing
+            } else {
+                Found::Pending
+            },
         }
     }
 
@@ -145,8 +149,8 @@ impl<F> Lists<F> {
     }
 }
 
-/// The nearest hit found so far: `t` and the object `id`, the sphere's record still to
-/// be made, or another shape's record.
+/// The nearest hit found so far: `t` and the object `id`, with its record made or still
+/// to be made.
 ///
 /// A hit at the same `t` as the held one wins when its object comes first, so the answer
 /// is the loop's over the objects in order, whatever order the groups are visited in.
@@ -156,11 +160,12 @@ struct Nearest<F> {
     found: Found<F>,
 }
 
-/// What [`Nearest`] holds: nothing yet, a packed sphere (its record made at the end), or
+/// What [`Nearest`] holds: nothing yet; a hit whose record is still to be made, once, for
+/// the nearest (a sphere's, or another shape's found in a batch, queried again); or
 /// another shape's record.
 enum Found<F> {
     Nothing,
-    Sphere,
+    Pending,
     Other(Hit<F>),
 }
 
@@ -199,11 +204,9 @@ impl<F: Float> Nearest<F> {
 impl<F: Float> Lists<F> {
     /// How many spheres left over after a group's packets of four are tested one by one
     /// rather than in a packet with empty lanes: one in f32, where four lanes fill one SSE
-    /// register; up to two in wider scalars, where a packet takes two or more. (Callgrind,
-    /// one thread: `four_mirrors`' floor alone 490 → 471 instructions per ray in f32;
-    /// `matte_spheres`' two leftovers alone 390 → 355 M instructions in f64, but
-    /// 299 → 310 M in f32.)
-    const ALONE: usize = if std::mem::size_of::<F>() <= 4 { 1 } else { 2 };
+    /// register; up to two in wider scalars, where a packet takes two or more (measured:
+    /// `docs/PERFORMANCE.md`).
+    const SINGLES: usize = if std::mem::size_of::<F>() <= 4 { 1 } else { 2 };
 
     /// Appends a group of the objects `ids`, testing up to `alone` leftover spheres one by
     /// one; where it lies.
@@ -276,14 +279,13 @@ impl<F: Float> Index<F> {
         if !wanted {
             index
                 .looped
-                .push_group(0..objects.len() as u32, objects, Lists::<F>::ALONE);
+                .push_group(0..objects.len() as u32, objects, Lists::<F>::SINGLES);
             return index;
         }
         // The loop keeps the unbounded objects (planes) and the huge ones: an object whose
         // box covers half the scene's (by surface area: a ground sphere) is entered by
         // nearly every ray that enters the tree, so the tree gains nothing on it, and its
-        // box would inflate every node above it. (`random_spheres`: 1176 → 1121
-        // instructions per ray, +2–3 % speed.)
+        // box would inflate every node above it.
         let whole = boxes
             .iter()
             .flatten()
@@ -295,18 +297,18 @@ impl<F: Float> Index<F> {
         index.looped.push_group(
             ids.clone().filter(|&i| in_tree(i).is_none()),
             objects,
-            Lists::<F>::ALONE,
+            Lists::<F>::SINGLES,
         );
         let (bounded, boxes): (Vec<u32>, Vec<Aabb<F>>) = ids.filter_map(in_tree).unzip();
         let bvh = Bvh::build(&boxes);
         let leaf = |k: usize| bvh.leaf(k).iter().map(|&p| bounded[p as usize]);
         // Leaves of up to four spheres (all of them, in a scene of spheres) become one
         // packet each, a lone sphere included: no group to look up on each visit outweighs
-        // the empty lanes. (`random_spheres`, callgrind, f32: see the commit.)
+        // the empty lanes.
         let one_packet = (0..bvh.leaf_count()).all(|k| {
             bvh.leaf(k).len() <= LANES && leaf(k).all(|i| objects[i as usize].shape.as_sphere().is_some())
         });
-        let alone = if one_packet { 0 } else { Lists::<F>::ALONE };
+        let alone = if one_packet { 0 } else { Lists::<F>::SINGLES };
         let groups = (0..bvh.leaf_count())
             .map(|k| index.in_tree.push_group(leaf(k), objects, alone))
             .collect();
@@ -455,7 +457,7 @@ impl<F: Float> Index<F> {
             Found::Other(hit) => hit,
             // Only the nearest sphere's record is made. (A shape that is not a sphere
             // answers the query it answered before.)
-            Found::Sphere => match object.shape.as_sphere() {
+            Found::Pending => match object.shape.as_sphere() {
                 Some(s) => s.hit_at(ray, best.t),
                 None => object.shape.hit(ray, bound())?,
             },
@@ -469,7 +471,7 @@ impl<F: Float> Index<F> {
         let Some((t, id)) = Self::beats(p, ray, best.t, best.id) else {
             return false;
         };
-        (best.t, best.id, best.found) = (t, id, Found::Sphere);
+        (best.t, best.id, best.found) = (t, id, Found::Pending);
         true
     }
 
@@ -506,7 +508,7 @@ impl<F: Float> Index<F> {
             if let Some(t) = sphere.nearest_t(ray)
                 && best.beaten_by(t, id)
             {
-                (best.t, best.id, best.found) = (t, id, Found::Sphere);
+                (best.t, best.id, best.found) = (t, id, Found::Pending);
                 changed = true;
             }
         }
