@@ -1,6 +1,6 @@
 //! The infinite plane `(X − P₀)·n = 0`.
 
-use super::{Hit, Hittable};
+use super::{Hit, Hittable, flat_hit_error};
 use crate::error::Result;
 use crate::float::Float;
 use crate::ray::Ray;
@@ -84,25 +84,15 @@ impl<F: Float> Plane<F> {
     /// The hit at parameter `t`: the point `O + tD` with its rounding-error bound.
     ///
     /// # Precision
-    /// The bound guarantees that the exact plane passes through the box
-    /// `point ± error`, which is what [`offset_ray_origin`](super::offset_ray_origin)
-    /// needs (the point's position *along* the plane is irrelevant to self-intersection
-    /// and, for grazing rays, much less accurate). With `N = (P₀ − O)·n`, `Δ = D·n`,
-    /// their computed values `Ñ = N + e_N`, `Δ̃ = Δ + e_Δ` and `t̃ = (Ñ/Δ̃)(1 + δ)`, the
-    /// exact point `O + t̃D` lies at (unnormalized) distance
-    /// `t̃Δ − N = e_N + δÑ − t̃e_Δ` from the plane, so
-    /// `|t̃Δ − N| ≤ γ(5)·Σ(|P₀ᵢ| + |Oᵢ|)|nᵢ| + γ(3)·Σ|t̃Dᵢ||nᵢ|`. Evaluating
-    /// `Oᵢ + t̃Dᵢ` costs `γ(2)·(|Oᵢ| + |t̃Dᵢ|)` per component. In total the computed
-    /// point is within `γ(7)·Σ|nᵢ|(|Oᵢ| + |t̃Dᵢ| + |P₀ᵢ|)` of the plane, so the per-component
-    /// box `γ(7)·(|O| + |t̃D| + |P₀|)` reaches the plane along `n`. We report
-    /// `γ(10)·(|O| + |t̃D| + |P₀|)`: three more roundings cover the evaluation of the
-    /// bound itself. The point is not projected onto the plane: that would not shrink a
-    /// bound of this form, and costs a dot product and a multiply-add per hit.
+    /// The bound is [`flat_hit_error`]'s for the plane through `P₀` (the derivation is
+    /// there): `t` comes from [`Plane::intersect`], `((P₀ − O)·n)/(D·n)`. The point is not
+    /// projected onto the plane: that would not shrink a bound of this form, and costs a
+    /// dot product and a multiply-add per hit.
     #[inline]
     fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
         let along = ray.direction * t;
         let point = ray.origin + along;
-        let error = (ray.origin.abs() + along.abs() + self.point.abs()) * F::gamma(10);
+        let error = flat_hit_error(ray, t, self.point);
         Hit::new(t, point, error, self.normal, ray.direction)
     }
 }
