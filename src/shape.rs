@@ -122,7 +122,7 @@ pub fn flat_hit_error<F: Float>(ray: &Ray<F>, t: F, anchor: Vec3<F>) -> Vec3<F> 
 ///   with a conservative `t > 0` test a spawned ray needs, so a flat shape can keep a
 ///   [`Plane`] and call it — then report [`flat_hit_error`]`(ray, t, A)`.
 /// - **Curved surfaces**: move the point back onto the surface and bound what is left, as
-///   [`Sphere::hit_at`] does (`p ← C + (p − C)·r/|p − C|`, then `γ(6)|p − C| + γ(2)|p|`
+///   `Sphere`'s hit record does (`p ← C + (p − C)·r/|p − C|`, then `γ(6)|p − C| + γ(2)|p|`
 ///   per component, pbrt-v4 §6.8.5).
 ///
 /// An error of zero does not move the origin at all: the rounded hit point lies on
