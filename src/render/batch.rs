@@ -15,7 +15,7 @@
 //! - each pixel's samples are summed in the reference's order, sample 0 first.
 
 use super::RenderSettings;
-use super::reference::{camera_ray, mean, sample_rng};
+use super::reference::{camera_ray, mean, pixel_stream, sample_rng};
 use super::trace::{Step, Tracer, saturate};
 use crate::camera::Camera;
 use crate::float::Float;
@@ -34,6 +34,8 @@ type Bounce<F> = (u32, Color<F>, Color<F>);
 pub(super) struct Batch<F, R> {
     /// Each pixel's generator for the sample being traced.
     rngs: Vec<R>,
+    /// Each pixel's coordinates in the image and its random stream.
+    pixels_at: Vec<(usize, usize, u64)>,
     /// Each pixel's sum of sample colours.
     sums: Vec<Color<F>>,
     /// The rays still travelling, and the pixel of each one's path.
@@ -53,6 +55,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
     pub(super) fn new() -> Self {
         Self {
             rngs: Vec::new(),
+            pixels_at: Vec::new(),
             sums: Vec::new(),
             rays: Vec::new(),
             pixels: Vec::new(),
@@ -81,15 +84,24 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         let spp = settings.samples_per_pixel;
         self.sums.clear();
         self.sums.resize(out.len(), Color::zero());
+        self.pixels_at.clear();
+        self.pixels_at.extend((0..out.len()).map(|i| {
+            let (x, y) = at(i);
+            (x, y, pixel_stream(settings, camera, x, y))
+        }));
         for sample in 0..spp {
+            // All generators first, then all rays: two short loops keep more pixels in
+            // flight than one long chain of dependent steps per pixel.
             self.rngs.clear();
+            let seeded = self
+                .pixels_at
+                .iter()
+                .map(|&(_, _, stream)| sample_rng(stream, sample));
+            self.rngs.extend(seeded);
             self.rays.clear();
             self.pixels.clear();
-            for i in 0..out.len() {
-                let (x, y) = at(i);
-                let mut rng = sample_rng(settings, camera, x, y, sample);
-                self.rays.push(camera_ray(camera, x, y, spp, &mut rng));
-                self.rngs.push(rng);
+            for (i, (&(x, y, _), rng)) in self.pixels_at.iter().zip(&mut self.rngs).enumerate() {
+                self.rays.push(camera_ray(camera, x, y, spp, rng));
                 self.pixels.push(i as u32);
             }
             self.trace(tracer);

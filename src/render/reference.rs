@@ -2,8 +2,10 @@
 //! and short on purpose. It defines every image this crate makes: the fast renderer
 //! ([`Renderer::render`](super::Renderer::render)) is tested to give its bytes.
 
+#[cfg(doc)]
+use super::sample_seed;
 use super::trace::{Tracer, saturate};
-use super::{Rect, Render, RenderSettings, RenderStats, sample_seed};
+use super::{Rect, Render, RenderSettings, RenderStats, seed};
 use crate::camera::Camera;
 use crate::error::Result;
 use crate::float::{Float, lit};
@@ -42,9 +44,10 @@ where
     let mut tracer = Tracer::new(scene, settings.max_depth);
     for (i, out) in image.pixels_mut().iter_mut().enumerate() {
         let (x, y) = (tile.x + i % tile.width, tile.y + i / tile.width);
+        let stream = pixel_stream(settings, camera, x, y);
         let mut sum = Color::zero();
         for sample in 0..settings.samples_per_pixel {
-            let mut rng: R = sample_rng(settings, camera, x, y, sample);
+            let mut rng: R = sample_rng(stream, sample);
             let ray = camera_ray(camera, x, y, settings.samples_per_pixel, &mut rng);
             sum = sum + tracer.trace(&ray, 0, &mut rng);
         }
@@ -60,19 +63,24 @@ where
     })
 }
 
-/// The generator of sample `sample` of pixel `(x, y)`, seeded from the render seed, the
-/// pixel's index in the **whole** image and the sample ([`sample_seed`]): never from a
-/// thread or a tile, so any split of the work gives the same image.
+/// The random stream of pixel `(x, y)`, from the render seed and the pixel's index in the
+/// **whole** image: never from a thread or a tile, so any split of the work gives the same
+/// image. Each of its samples seeds a generator of its own ([`sample_rng`]).
 #[inline]
-pub(super) fn sample_rng<R: SeedableRng, F: Float>(
+pub(super) fn pixel_stream<F: Float>(
     settings: &RenderSettings,
     camera: &impl Camera<F>,
     x: usize,
     y: usize,
-    sample: u32,
-) -> R {
-    let pixel = (y * camera.width() + x) as u64;
-    R::seed_from_u64(sample_seed(settings.seed, pixel, u64::from(sample)))
+) -> u64 {
+    seed::pixel_stream(settings.seed, (y * camera.width() + x) as u64)
+}
+
+/// The generator of sample `sample` of the pixel with `stream`: together with
+/// [`pixel_stream`], seeded from [`sample_seed`]`(seed, pixel, sample)`.
+#[inline]
+pub(super) fn sample_rng<R: SeedableRng>(stream: u64, sample: u32) -> R {
+    R::seed_from_u64(seed::seed_in_stream(stream, u64::from(sample)))
 }
 
 /// A sample's camera ray: with one sample per pixel through the pixel centre (the spec's

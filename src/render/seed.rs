@@ -10,7 +10,18 @@
 #[inline]
 #[must_use]
 pub fn sample_seed(seed: u64, pixel: u64, sample: u64) -> u64 {
-    let stream = splitmix64(splitmix64(seed) ^ pixel.wrapping_mul(WEYL));
+    seed_in_stream(pixel_stream(seed, pixel), sample)
+}
+
+/// The first half of [`sample_seed`], the same for all of a pixel's samples.
+#[inline]
+pub(super) fn pixel_stream(seed: u64, pixel: u64) -> u64 {
+    splitmix64(splitmix64(seed) ^ pixel.wrapping_mul(WEYL))
+}
+
+/// The second half of [`sample_seed`]: sample `sample` of the pixel with `stream`.
+#[inline]
+pub(super) fn seed_in_stream(stream: u64, sample: u64) -> u64 {
     splitmix64(stream ^ sample.wrapping_mul(WEYL))
 }
 
