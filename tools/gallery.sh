@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Renders the README's pictures into docs/images/: every example at its default settings,
+# four_mirrors 800 pixels wide and the others 400.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+cargo build --release --quiet --examples
+for spec in "four_mirrors 800" matte_spheres glass plane_and_triangles point_lights random_spheres; do
+    read -r name width <<<"$spec"
+    "target/release/examples/$name" --width "${width:-400}" --out "$out" >/dev/null
+    cp "$out/$name.png" "docs/images/$name.png"
+    echo "docs/images/$name.png"
+done
