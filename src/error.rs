@@ -25,6 +25,24 @@ pub enum Error {
     },
     /// A malformed PPM file.
     Ppm(String),
+    /// A scene file that does not describe a scene.
+    SceneFile {
+        /// The scene file.
+        path: PathBuf,
+        /// Where in it: `line 3, column 7`, or a field's path such as `objects[3].radius`.
+        location: String,
+        /// What is wrong there.
+        message: String,
+    },
+    /// A mesh file that cannot be loaded.
+    Mesh {
+        /// The mesh file.
+        path: PathBuf,
+        /// What is wrong, naming the element (`face 12`, `vertex 3`, `line 40`, …).
+        message: String,
+    },
+    /// Image tiles that do not make one image (or a tile file that cannot be read).
+    Tiles(String),
 }
 
 impl Error {
@@ -44,6 +62,13 @@ impl fmt::Display for Error {
             Self::InvalidSettings(reason) => write!(f, "invalid render settings: {reason}"),
             Self::Io { path, source } => write!(f, "{}: {source}", path.display()),
             Self::Ppm(reason) => write!(f, "malformed PPM: {reason}"),
+            Self::SceneFile {
+                path,
+                location,
+                message,
+            } => write!(f, "{}: {location}: {message}", path.display()),
+            Self::Mesh { path, message } => write!(f, "{}: {message}", path.display()),
+            Self::Tiles(reason) => write!(f, "tiles: {reason}"),
         }
     }
 }

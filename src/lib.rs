@@ -41,6 +41,7 @@ pub mod image;
 mod lanes;
 pub mod light;
 pub mod material;
+pub mod mesh;
 pub mod metrics;
 pub mod optics;
 pub mod ray;

@@ -1,0 +1,45 @@
+//! Triangle meshes from files: Wavefront OBJ and Stanford PLY.
+//!
+//! A mesh is loaded as shared vertex positions and triangles indexing them. Polygons are
+//! split into triangles as fans; faces without area are skipped and counted, so a caller
+//! can report them.
+
+mod obj;
+mod ply;
+
+use crate::error::{Error, Result};
+use crate::vec3::Vec3;
+use std::path::Path;
+
+/// A triangle mesh as read from a file, in the file's own coordinates.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeshData {
+    /// The vertex positions, every coordinate finite.
+    pub positions: Vec<Vec3<f64>>,
+    /// The triangles, as indices into `positions`, each with a non-zero area.
+    pub triangles: Vec<[u32; 3]>,
+    /// Faces of the file skipped for having no area (repeated or collinear vertices).
+    pub skipped_degenerate: usize,
+}
+
+/// Loads the mesh at `path`, choosing the format by its extension (`.obj` or `.ply`, in any
+/// case).
+///
+/// # Errors
+/// [`Error::Mesh`], naming the file and the element, for a file that is missing, of another
+/// format, truncated or garbled, with an index out of range, or with a coordinate that is
+/// NaN or infinite.
+pub fn load(path: &Path) -> Result<MeshData> {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match extension.as_deref() {
+        Some("obj") => obj::load(path),
+        Some("ply") => ply::load(path),
+        _ => Err(Error::Mesh {
+            path: path.to_path_buf(),
+            message: "unknown mesh format: the name must end in .obj or .ply".into(),
+        }),
+    }
+}

@@ -1,0 +1,13 @@
+//! Reading PLY files.
+
+use super::MeshData;
+use crate::error::{Error, Result};
+use std::path::Path;
+
+/// Loads an PLY mesh.
+pub(super) fn load(path: &Path) -> Result<MeshData> {
+    Err(Error::Mesh {
+        path: path.to_path_buf(),
+        message: "PLY meshes cannot be read yet".into(),
+    })
+}
