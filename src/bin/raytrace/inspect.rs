@@ -1,0 +1,68 @@
+//! `raytrace check` and `raytrace advise`: what a scene file holds and what it needs.
+
+use raytrace::{Camera, Result};
+use raytrace::advice::Advice;
+use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
+use std::path::Path;
+
+/// Validates the scene (every value, every mesh) and prints what it holds.
+pub fn check(path: &Path) -> Result<()> {
+    let file = SceneFile::load(path)?;
+    let built = file.build::<f64>()?;
+    let s = &built.summary;
+    let r = file.render();
+    println!("{}: valid", path.display());
+    println!(
+        "  objects: {} spheres, {} planes, {} triangles (meshes: {}), {} lights",
+        s.spheres, s.planes, s.triangles, s.meshes, s.lights
+    );
+    if s.skipped_degenerate > 0 {
+        println!("  skipped: {} faces without area", s.skipped_degenerate);
+    }
+    match &s.bounds {
+        Some(b) => println!("  bounds of the bounded objects: {:?} to {:?}", b.min, b.max),
+        None => println!("  bounds: no bounded objects"),
+    }
+    println!(
+        "  acceleration: {}",
+        if s.uses_bvh { "BVH" } else { "a loop over the objects" }
+    );
+    let image = (built.camera.width(), built.camera.height());
+    println!(
+        "  render: {}×{} pixels, {} spp, max depth {}, seed {}",
+        image.0, image.1, r.spp, r.max_depth, r.seed
+    );
+    match r.precision {
+        FilePrecision::F32 => println!("  precision: f32"),
+        FilePrecision::F64 => println!("  precision: f64"),
+        FilePrecision::Auto => {
+            let advice = advise_precision(&file)?;
+            println!("  precision: auto, measured: {}", advice.recommended);
+        }
+    }
+    Ok(())
+}
+
+/// Prints the measured precision advice.
+pub fn advise(path: &Path) -> Result<()> {
+    let file = SceneFile::load(path)?;
+    let advice = advise_precision(&file)?;
+    print(path, &advice);
+    Ok(())
+}
+
+fn print(path: &Path, a: &Advice) {
+    println!("{}: against a double-double reference render", path.display());
+    for (name, t) in [("f32", &a.f32), ("f64", &a.f64)] {
+        println!(
+            "  {name}: RMSE {:.2e}, {:.3} % of pixels more than one 8-bit step off, {:.3} s",
+            t.error.rmse,
+            100.0 * t.error.over_one_step,
+            t.time.as_secs_f64()
+        );
+    }
+    println!(
+        "  advice: {} (the cheapest within one step on 99 % of the pixels)",
+        a.recommended
+    );
+}

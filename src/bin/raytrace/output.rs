@@ -1,0 +1,191 @@
+//! Where the results go: file names, formats, writing, merging tiles, the thread pool.
+
+use crate::args::{EncodingArg, Format, MAX_THREADS, MergeArgs, RenderArgs};
+use raytrace::advice::Precision;
+use raytrace::image::{
+    Encoding, TileHeader, check_writable, merge_tiles, read_tile, write_exr, write_pfm, write_png,
+    write_ppm, write_tile,
+};
+use raytrace::scene_file::{RenderOptions, SceneFile};
+use raytrace::{Error, Image, Result};
+use std::path::{Path, PathBuf};
+
+/// A file to write and how.
+pub struct Target {
+    /// The file.
+    pub path: PathBuf,
+    /// Its image format; `None` for a tile file.
+    format: Option<Format>,
+    encoding: Encoding,
+}
+
+impl Target {
+    /// The output of `raytrace render`: `--out`, or a name made of the scene's and the
+    /// settings, so renders with other settings do not overwrite each other.
+    pub fn for_render(args: &RenderArgs, file: &SceneFile) -> Result<Self> {
+        let encoding = encoding(args.encoding);
+        if let Some((k, n)) = args.tile {
+            if args.format.is_some() {
+                return Err(usage("--format does not apply to --tile: a tile file is linear f64"));
+            }
+            let path = args
+                .out
+                .clone()
+                .unwrap_or_else(|| PathBuf::from(format!("{}-tile{k}of{n}.rtile", stem(args, file))));
+            return Ok(Self {
+                path,
+                format: None,
+                encoding,
+            });
+        }
+        let format = choose_format(args.format, args.out.as_deref(), Format::Png)?;
+        let path = args
+            .out
+            .clone()
+            .unwrap_or_else(|| PathBuf::from(format!("{}.{}", stem(args, file), format.extension())));
+        Ok(Self {
+            path,
+            format: Some(format),
+            encoding,
+        })
+    }
+
+    /// Fails now, before any render, if the file's folder cannot be written.
+    pub fn check_writable(&self) -> Result<()> {
+        check_writable(folder(&self.path))
+    }
+
+    /// Writes `image` in the target's format.
+    pub fn write_image(&self, image: &Image) -> Result<()> {
+        match self.format {
+            Some(Format::Ppm) => write_ppm(&self.path, &image.to_u16(self.encoding)),
+            Some(Format::Png) => write_png(&self.path, &image.to_u16(self.encoding), self.encoding),
+            Some(Format::Exr) => write_exr(&self.path, image),
+            Some(Format::Pfm) => write_pfm(&self.path, image),
+            None => Err(usage("a tile target holds a tile, not an image")),
+        }
+    }
+
+    /// Writes a tile file.
+    pub fn write_tile(&self, header: &TileHeader, image: &Image) -> Result<()> {
+        write_tile(&self.path, header, image)
+    }
+}
+
+/// `raytrace merge`: reads the tiles, checks they make one image, writes it.
+pub fn merge(args: &MergeArgs) -> Result<()> {
+    let format = choose_format(args.format, Some(&args.out), Format::Png)?;
+    let target = Target {
+        path: args.out.clone(),
+        format: Some(format),
+        encoding: encoding(args.encoding),
+    };
+    target.check_writable()?;
+    let tiles = args.tiles.iter().map(|p| read_tile(p)).collect::<Result<Vec<_>>>()?;
+    let image = merge_tiles(&tiles)?;
+    target.write_image(&image)?;
+    println!(
+        "wrote {}: {}×{} pixels from {} tiles",
+        target.path.display(),
+        image.width(),
+        image.height(),
+        tiles.len()
+    );
+    Ok(())
+}
+
+/// The worker threads asked for (all cores if none).
+pub fn pool(threads: Option<u16>) -> Result<rayon::ThreadPool> {
+    let mut pool = rayon::ThreadPoolBuilder::new();
+    if let Some(t) = threads {
+        debug_assert!(usize::from(t) <= MAX_THREADS, "clap checks the range");
+        pool = pool.num_threads(usize::from(t));
+    }
+    pool.build()
+        .map_err(|e| Error::InvalidSettings(format!("cannot start the worker threads: {e}")))
+}
+
+/// The settings that make an image what it is, in words: the tile files carry them, and
+/// the merge checks that they agree.
+pub fn describe(r: &RenderOptions, precision: Precision) -> String {
+    format!(
+        "width {}, {} spp, max depth {}, seed {}, {precision}",
+        r.width, r.spp, r.max_depth, r.seed
+    )
+}
+
+/// FNV-1a (64-bit) of the scene as rendered, after the overrides: tiles of different
+/// scenes are told apart. (A mesh is named by its path; its contents are not hashed.)
+pub fn scene_hash(file: &SceneFile) -> String {
+    let hash = file.to_toml().bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    });
+    format!("{hash:016x}")
+}
+
+/// The default file name's stem: the scene's, then the settings that change the image.
+fn stem(args: &RenderArgs, file: &SceneFile) -> String {
+    let name = args
+        .scene
+        .file_stem()
+        .map_or_else(|| "render".into(), |s| s.to_string_lossy().into_owned());
+    let r = file.render();
+    format!("{name}-w{}-{}spp-d{}-seed{}", r.width, r.spp, r.max_depth, r.seed)
+}
+
+/// `--format`, else the extension of `--out`, else `default`; a conflict is an error.
+fn choose_format(asked: Option<Format>, out: Option<&Path>, default: Format) -> Result<Format> {
+    let named = out.and_then(Format::of);
+    match (asked, named) {
+        (Some(a), Some(n)) if a != n => Err(usage(&format!(
+            "--format {} but the output is named .{}",
+            a.extension(),
+            n.extension()
+        ))),
+        (Some(a), _) => Ok(a),
+        (None, Some(n)) => Ok(n),
+        (None, None) => match out {
+            Some(p) if p.extension().is_some() => Err(usage(&format!(
+                "{}: unknown image format (ppm, png, exr or pfm; or say --format)",
+                p.display()
+            ))),
+            _ => Ok(default),
+        },
+    }
+}
+
+fn encoding(e: EncodingArg) -> Encoding {
+    match e {
+        EncodingArg::Srgb => Encoding::Srgb,
+        EncodingArg::Linear => Encoding::Linear,
+    }
+}
+
+/// The folder a file goes into (`.` for a bare name).
+fn folder(path: &Path) -> &Path {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    }
+}
+
+fn usage(message: &str) -> Error {
+    Error::InvalidSettings(message.into())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formats_follow_the_name_unless_told() {
+        let p = |s: &str| Some(PathBuf::from(s));
+        assert_eq!(choose_format(None, p("a.exr").as_deref(), Format::Png).unwrap(), Format::Exr);
+        assert_eq!(choose_format(None, None, Format::Png).unwrap(), Format::Png);
+        assert_eq!(choose_format(Some(Format::Pfm), p("a").as_deref(), Format::Png).unwrap(), Format::Pfm);
+        assert!(choose_format(Some(Format::Pfm), p("a.png").as_deref(), Format::Png).is_err());
+        assert!(choose_format(None, p("a.jpg").as_deref(), Format::Png).is_err());
+        assert_eq!(folder(Path::new("x.png")), Path::new("."));
+        assert_eq!(folder(Path::new("out/x.png")), Path::new("out"));
+    }
+}

@@ -1,0 +1,112 @@
+//! `raytrace render`: a scene file, the command line's overrides, one image or tile.
+
+use crate::args::{PrecisionArg, RenderArgs};
+use crate::output::{self, Target};
+use raytrace::advice::Precision;
+use raytrace::image::{TileHeader, check_memory};
+use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
+use raytrace::{Camera, Float, Rect, Render, Renderer, Result};
+
+/// Loads the scene, applies the overrides, checks the output before rendering, renders
+/// and writes.
+pub fn run(args: &RenderArgs) -> Result<()> {
+    let mut file = SceneFile::load(&args.scene)?;
+    override_settings(&mut file, args)?;
+    let target = Target::for_render(args, &file)?;
+    target.check_writable()?;
+    let precision = match file.render().precision {
+        FilePrecision::F32 => Precision::F32,
+        FilePrecision::F64 => Precision::F64,
+        FilePrecision::Auto => {
+            let advice = advise_precision(&file)?;
+            eprintln!("precision auto: {} ({})", advice.recommended, summary(&advice));
+            advice.recommended
+        }
+    };
+    let pool = output::pool(args.threads)?;
+    let (render, camera) = pool.install(|| match precision {
+        Precision::F32 => render_in::<f32>(&file, args),
+        Precision::F64 => render_in::<f64>(&file, args),
+    })?;
+    let settings = output::describe(file.render(), precision);
+    match args.tile {
+        None => target.write_image(&render.image)?,
+        Some(_) => {
+            let header = TileHeader {
+                scene: output::scene_hash(&file),
+                settings: settings.clone(),
+                image_width: camera.0,
+                image_height: camera.1,
+                rect: tile_rect(args, camera.0, camera.1)?,
+            };
+            target.write_tile(&header, &render.image)?;
+        }
+    }
+    println!(
+        "wrote {}: {}×{} pixels, {settings}: {}",
+        target.path.display(),
+        render.image.width(),
+        render.image.height(),
+        render.stats
+    );
+    Ok(())
+}
+
+/// The command line's values replace the scene file's.
+fn override_settings(file: &mut SceneFile, args: &RenderArgs) -> Result<()> {
+    let r = file.render_mut();
+    if let Some(w) = args.width {
+        r.width = usize::try_from(w)
+            .map_err(|_| raytrace::Error::InvalidSettings(format!("width {w} is too large")))?;
+    }
+    if let Some(spp) = args.spp {
+        r.spp = spp;
+    }
+    if let Some(d) = args.max_depth {
+        r.max_depth = d;
+    }
+    if let Some(s) = args.seed {
+        r.seed = s;
+    }
+    if let Some(p) = args.precision {
+        r.precision = match p {
+            PrecisionArg::F32 => FilePrecision::F32,
+            PrecisionArg::F64 => FilePrecision::F64,
+            PrecisionArg::Auto => FilePrecision::Auto,
+        };
+    }
+    Ok(())
+}
+
+/// Builds the scene in `F` and renders it (or the tile asked for). Also returns the whole
+/// image's size.
+fn render_in<F: Float>(file: &SceneFile, args: &RenderArgs) -> Result<(Render, (usize, usize))> {
+    let built = file.build::<F>()?;
+    let (width, height) = (built.camera.width(), built.camera.height());
+    let tile = tile_rect(args, width, height)?;
+    check_memory(tile.width, tile.height)?;
+    let mut settings = built.settings;
+    settings.progress = !args.quiet;
+    let render = Renderer::new(&built.scene, &built.camera)
+        .settings(settings)
+        .tile(tile)
+        .render()?;
+    Ok((render, (width, height)))
+}
+
+/// The region to render: tile `K/N` of the image, or all of it.
+fn tile_rect(args: &RenderArgs, width: usize, height: usize) -> Result<Rect> {
+    match args.tile {
+        Some((k, n)) => Rect::tile(k - 1, n, width, height),
+        None => Ok(Rect::full(width, height)),
+    }
+}
+
+/// The advice in a few words: each scalar's share of pixels off by more than one step.
+fn summary(advice: &raytrace::advice::Advice) -> String {
+    format!(
+        "f32 {:.3} %, f64 {:.3} % of pixels more than one 8-bit step off",
+        100.0 * advice.f32.error.over_one_step,
+        100.0 * advice.f64.error.over_one_step
+    )
+}
