@@ -17,11 +17,15 @@ mod output;
 mod render;
 
 use args::{Cli, Command};
-use clap::Parser;
+use clap::error::ErrorKind;
+use clap::{CommandFactory, Parser};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if let Err(message) = output::check_usage(&cli.command) {
+        Cli::command().error(ErrorKind::ArgumentConflict, message).exit();
+    }
     let result = raytrace::image::on_interrupt_remove_temporary_files().and_then(|()| match &cli.command {
         Command::Render(args) => render::run(args),
         Command::Check { scene } => inspect::check(scene),

@@ -1,6 +1,6 @@
 //! Where the results go: file names, formats, writing, merging tiles, the thread pool.
 
-use crate::args::{EncodingArg, Format, MAX_THREADS, MergeArgs, RenderArgs};
+use crate::args::{Command, EncodingArg, Format, MAX_THREADS, MergeArgs, RenderArgs};
 use raytrace::advice::Precision;
 use raytrace::image::{
     Encoding, TileHeader, check_writable, merge_tiles, read_tile, write_exr, write_pfm, write_png,
@@ -25,9 +25,6 @@ impl Target {
     pub fn for_render(args: &RenderArgs, file: &SceneFile) -> Result<Self> {
         let encoding = encoding(args.encoding);
         if let Some((k, n)) = args.tile {
-            if args.format.is_some() {
-                return Err(usage("--format does not apply to --tile: a tile file is linear f64"));
-            }
             let path = args
                 .out
                 .clone()
@@ -133,25 +130,43 @@ fn stem(args: &RenderArgs, file: &SceneFile) -> String {
     format!("{name}-w{}-{}spp-d{}-seed{}", r.width, r.spp, r.max_depth, r.seed)
 }
 
+/// The usage mistakes clap cannot see: an output format that contradicts the output's name.
+pub fn check_usage(command: &Command) -> Result<(), String> {
+    match command {
+        Command::Render(args) if args.tile.is_some() => match args.format {
+            Some(_) => Err("--format does not apply to --tile: a tile file holds linear f64 values".into()),
+            None => Ok(()),
+        },
+        Command::Render(args) => format_for(args.format, args.out.as_deref(), Format::Png).map(drop),
+        Command::Merge(args) => format_for(args.format, Some(&args.out), Format::Png).map(drop),
+        _ => Ok(()),
+    }
+}
+
 /// `--format`, else the extension of `--out`, else `default`; a conflict is an error.
-fn choose_format(asked: Option<Format>, out: Option<&Path>, default: Format) -> Result<Format> {
+fn format_for(asked: Option<Format>, out: Option<&Path>, default: Format) -> Result<Format, String> {
     let named = out.and_then(Format::of);
     match (asked, named) {
-        (Some(a), Some(n)) if a != n => Err(usage(&format!(
+        (Some(a), Some(n)) if a != n => Err(format!(
             "--format {} but the output is named .{}",
             a.extension(),
             n.extension()
-        ))),
+        )),
         (Some(a), _) => Ok(a),
         (None, Some(n)) => Ok(n),
         (None, None) => match out {
-            Some(p) if p.extension().is_some() => Err(usage(&format!(
+            Some(p) if p.extension().is_some() => Err(format!(
                 "{}: unknown image format (ppm, png, exr or pfm; or say --format)",
                 p.display()
-            ))),
+            )),
             _ => Ok(default),
         },
     }
+}
+
+/// [`format_for`], after [`check_usage`] has reported its errors.
+fn choose_format(asked: Option<Format>, out: Option<&Path>, default: Format) -> Result<Format> {
+    format_for(asked, out, default).map_err(|e| usage(&e))
 }
 
 fn encoding(e: EncodingArg) -> Encoding {
