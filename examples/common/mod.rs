@@ -77,9 +77,10 @@ fn run(
     let ppm = opts.out.join(format!("{name}.ppm"));
     let png = opts.out.join(format!("{name}.png"));
     write_ppm(&ppm, &samples)?;
-    write_png(&png, &samples, opts.encoding).map_err(|e| {
-        raytrace::Error::InvalidSettings(format!("{e} ({} was written; the PNG was not)", ppm.display()))
-    })?;
+    if let Err(e) = write_png(&png, &samples, opts.encoding) {
+        eprintln!("note: {} was written; {} was not", ppm.display(), png.display());
+        return Err(e);
+    }
     println!(
         "{name}: {}×{} pixels, {} spp, max depth {}, {}, seed {}",
         samples.width, samples.height, opts.spp, opts.max_depth, opts.precision, opts.seed
