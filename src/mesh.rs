@@ -4,6 +4,7 @@
 //! split into triangles as fans; faces without area are skipped and counted, so a caller
 //! can report them.
 
+mod check;
 mod obj;
 mod ply;
 
