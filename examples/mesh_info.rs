@@ -11,7 +11,6 @@ use std::time::Instant;
 
 /// Prints the counts and bounds of an OBJ or PLY mesh.
 #[derive(Parser)]
-#[command(about)]
 struct Args {
     /// The mesh file (`.obj` or `.ply`).
     path: PathBuf,

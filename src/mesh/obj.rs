@@ -26,7 +26,6 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
         single_index: false,
         ignore_points: false,
         ignore_lines: false,
-        ..tobj::LoadOptions::default()
     };
     let no_materials = |_: &Path| Ok(Default::default());
     let (models, _) =
