@@ -9,6 +9,7 @@ mod exr;
 mod pfm;
 mod png;
 mod ppm;
+mod tile;
 
 pub use self::exr::write_exr;
 #[cfg(feature = "cli")]
@@ -18,6 +19,7 @@ pub use encoding::Encoding;
 pub use pfm::{parse_pfm, read_pfm, write_pfm};
 pub use png::write_png;
 pub use ppm::{parse_ppm, read_ppm, write_ppm, write_ppm_to};
+pub use tile::{TileHeader, merge_tiles, parse_tile, read_tile, write_tile};
 
 use crate::error::{Error, Result};
 
