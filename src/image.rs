@@ -6,6 +6,7 @@
 mod atomic;
 mod encoding;
 mod exr;
+mod memory;
 mod pfm;
 mod png;
 mod ppm;
@@ -16,6 +17,7 @@ pub use self::exr::write_exr;
 pub use atomic::on_interrupt_remove_temporary_files;
 pub use atomic::{check_writable, remove_temporary_files, write_atomic};
 pub use encoding::Encoding;
+pub use memory::{BYTES_PER_PIXEL, check_memory};
 pub use pfm::{parse_pfm, read_pfm, write_pfm};
 pub use png::write_png;
 pub use ppm::{parse_ppm, read_ppm, write_ppm, write_ppm_to};
