@@ -10,6 +10,7 @@ mod memory;
 mod pfm;
 mod png;
 mod ppm;
+mod rect;
 mod tile;
 
 pub use self::exr::write_exr;
@@ -21,6 +22,7 @@ pub use memory::{BYTES_PER_PIXEL, check_memory};
 pub use pfm::{parse_pfm, read_pfm, write_pfm};
 pub use png::write_png;
 pub use ppm::{parse_ppm, read_ppm, write_ppm, write_ppm_to};
+pub use rect::Rect;
 pub use tile::{TileHeader, merge_tiles, parse_tile, read_tile, write_tile};
 
 use crate::error::{Error, Result};

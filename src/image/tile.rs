@@ -1,33 +1,10 @@
 //! Tile files (`.rtile`): one part of a render split across processes, stored exactly,
 //! so that [`merge_tiles`] gives the bits of the whole render.
 //!
-//! A tile file is a text header, an empty line, then the data:
-//!
-//! ```text
-//! raytrace-tile 1
-//! scene = 9f3c0a4e5d7b2e11
-//! settings = spp=16 max_depth=10 seed=0 precision=f32
-//! image = 640 480
-//! rect = 0 120 640 120
-//!
-//! <the tile's linear pixels: R G B as f64 little-endian, row by row from its top-left>
-//! ```
-//!
-//! - The first line is the magic `raytrace-tile` and the format's version, `1`.
-//! - Then one `key = value` line for each of the four keys, in any order, each once:
-//!   the value is everything after the first ` = ` on its line.
-//!   - `scene`: a hash of what was rendered, chosen by the caller (for example FNV-1a 64
-//!     of the scene file's bytes and the settings), as hexadecimal digits;
-//!   - `settings`: free text chosen by the caller, without control characters, that must
-//!     match between tiles (for example `spp=16 max_depth=10 seed=0 precision=f32`);
-//!   - `image`: the whole image's width and height;
-//!   - `rect`: the tile's `x y width height` in that image (rows from the top).
-//! - An empty line ends the header (every line ends in `\n`).
-//! - Exactly `24 × width × height` bytes of the rect follow, nothing after them.
+//! The format is documented on [`TileHeader`], where the public docs show it.
 
-use super::{Image, check_size, write_atomic};
+use super::{Image, Rect, check_size, write_atomic};
 use crate::error::{Error, Result};
-use crate::render::Rect;
 use std::io::Write;
 use std::path::Path;
 
@@ -35,6 +12,30 @@ use std::path::Path;
 const MAGIC: &str = "raytrace-tile 1";
 
 /// What a tile file says about its tile: which render it belongs to and where it goes.
+///
+/// A tile file is a text header, an empty line, then the data:
+///
+/// ```text
+/// raytrace-tile 1
+/// scene = 9f3c0a4e5d7b2e11
+/// settings = spp=16 max_depth=10 seed=0 precision=f32
+/// image = 640 480
+/// rect = 0 120 640 120
+///
+/// <the tile's linear pixels: R G B as f64 little-endian, row by row from its top-left>
+/// ```
+///
+/// - The first line is the magic `raytrace-tile` and the format's version, `1`.
+/// - Then one `key = value` line for each of the four keys, in any order, each once:
+///   the value is everything after the first ` = ` on its line.
+///   - `scene`: a hash of what was rendered, chosen by the caller (for example FNV-1a 64
+///     of the scene file's bytes and the settings), as hexadecimal digits;
+///   - `settings`: free text chosen by the caller, without control characters, that must
+///     match between tiles (for example `spp=16 max_depth=10 seed=0 precision=f32`);
+///   - `image`: the whole image's width and height;
+///   - `rect`: the tile's `x y width height` in that image (rows from the top).
+/// - An empty line ends the header (every line ends in `\n`).
+/// - Exactly `24 × width × height` bytes of the rect follow, nothing after them.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TileHeader {
     /// A hash identifying the scene (and whatever else the caller hashes), as hex digits.
@@ -130,7 +131,7 @@ pub fn read_tile(path: &Path) -> Result<(TileHeader, Image)> {
     })
 }
 
-/// Parses a tile file: the header described in the [module docs](self), validated as
+/// Parses a tile file: the header described at [`TileHeader`], validated as
 /// [`TileHeader::validate`] does, then exactly the rect's pixels.
 ///
 /// Never panics, and checks the data's length against the header before allocating.
