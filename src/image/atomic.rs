@@ -92,7 +92,7 @@ fn remove_all(live: &mut Vec<PathBuf>) {
     }
 }
 
-/// Installs a Ctrl-C (SIGINT, and SIGTERM on Unix) handler that calls
+/// Installs a Ctrl-C handler (SIGINT on Unix; SIGTERM is left alone) that calls
 /// [`remove_temporary_files`] and exits with status 130, the shell's code for a
 /// program ended by SIGINT.
 ///
