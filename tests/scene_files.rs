@@ -110,7 +110,10 @@ fn summaries_count_what_the_files_hold() {
     let b = s.bounds.unwrap();
     // Shapes pad their boxes by a few units of rounding.
     assert!((b.min.y + 0.8).abs() < 1e-12, "{b:?}");
-    assert!((b.max.x - 4.5).abs() < 1e-12, "the sphere at x = 3.5 of radius 1: {b:?}");
+    assert!(
+        (b.max.x - 4.5).abs() < 1e-12,
+        "the sphere at x = 3.5 of radius 1: {b:?}"
+    );
     assert!(!s.uses_bvh);
     let many = SceneFile::load(&scene_path("random_spheres"))
         .unwrap()

@@ -123,7 +123,7 @@ fn camera<F: Float>(root: &Field, spec: &CameraSpec, width: usize) -> Result<Fil
     let width_at = root.key("render").key("width");
     match *spec {
         CameraSpec::Screen { eye } => {
-            if width < 4 || width % 2 != 0 {
+            if width < 4 || !width.is_multiple_of(2) {
                 return Err(width_at.error(format!(
                     "the screen camera needs an even width of at least 4, for a 2:1 image (got {width})"
                 )));
