@@ -364,3 +364,28 @@ proptest! {
         prop_assert_eq!(SceneFile::parse(&text, Path::new("p.toml")).unwrap(), file, "{}", text);
     }
 }
+
+#[test]
+fn the_format_documents_example_parses() {
+    let doc = include_str!("../docs/SCENE_FORMAT.md");
+    let (_, rest) = doc.split_once("```toml\n").unwrap();
+    let (example, _) = rest.split_once("```").unwrap();
+    let file = SceneFile::parse(example, Path::new("docs/example.toml")).unwrap();
+    assert_eq!(
+        (file.objects.len(), file.materials.len(), file.lights.len()),
+        (4, 3, 1)
+    );
+    // Everything but the mesh (which this branch cannot read) builds.
+    let mut no_mesh = file.clone();
+    no_mesh.objects.pop();
+    assert_eq!(no_mesh.build::<f32>().unwrap().summary.spheres, 2);
+}
+
+#[test]
+fn auto_precision_is_advised_on_the_files_scene() {
+    let mut file = SceneFile::load(&scene_path("four_mirrors")).unwrap();
+    file.render_mut().width = 16;
+    let advice = raytrace::scene_file::advise_precision(&file).unwrap();
+    // The spec's scene near the origin is within one 8-bit step in f64 at least.
+    assert!(advice.f64.error.within_one_step(), "{advice:?}");
+}
