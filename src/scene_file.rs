@@ -27,7 +27,7 @@
 //! let built = file.build::<f64>()?;
 //! assert_eq!(built.summary.spheres, 1);
 //! let image = raytrace::render(&built.scene, &built.camera, &built.settings)?.image;
-//! assert_eq!((image.width, image.height), (40, 20));
+//! assert_eq!((image.width(), image.height()), (40, 20));
 //! # Ok::<(), raytrace::Error>(())
 //! ```
 
