@@ -43,6 +43,10 @@ pub enum Error {
     },
     /// Image tiles that do not make one image (or a tile file that cannot be read).
     Tiles(String),
+    /// A malformed PFM file.
+    Pfm(String),
+    /// The Ctrl-C handler could not be installed.
+    Interrupt(String),
 }
 
 impl Error {
@@ -69,6 +73,8 @@ impl fmt::Display for Error {
             } => write!(f, "{}: {location}: {message}", path.display()),
             Self::Mesh { path, message } => write!(f, "{}: {message}", path.display()),
             Self::Tiles(reason) => write!(f, "tiles: {reason}"),
+            Self::Pfm(reason) => write!(f, "malformed PFM: {reason}"),
+            Self::Interrupt(reason) => write!(f, "cannot handle Ctrl-C: {reason}"),
         }
     }
 }

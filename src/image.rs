@@ -1,15 +1,29 @@
-//! Images: the linear RGB buffer a render produces, its 16-bit encoding, and the
-//! PPM and PNG files it is written to.
+//! Images: the linear RGB buffer a render produces, its 16-bit encoding, the files it is
+//! written to (PPM and PNG for viewing, PFM and OpenEXR keeping linear values above 1),
+//! the tile files a render split across processes is merged from, and the checks worth
+//! making before a long render (memory, a writable folder).
 
 mod atomic;
 mod encoding;
+mod exr;
+mod memory;
+mod pfm;
 mod png;
 mod ppm;
+mod rect;
+mod tile;
 
-pub use atomic::write_atomic;
+pub use self::exr::write_exr;
+#[cfg(feature = "cli")]
+pub use atomic::on_interrupt_remove_temporary_files;
+pub use atomic::{check_writable, remove_temporary_files, write_atomic};
 pub use encoding::Encoding;
+pub use memory::{BYTES_PER_PIXEL, check_memory};
+pub use pfm::{parse_pfm, read_pfm, write_pfm};
 pub use png::write_png;
 pub use ppm::{parse_ppm, read_ppm, write_ppm, write_ppm_to};
+pub use rect::Rect;
+pub use tile::{TileHeader, merge_tiles, parse_tile, read_tile, write_tile};
 
 use crate::error::{Error, Result};
 

@@ -48,6 +48,7 @@ pub mod ray;
 pub mod render;
 pub mod sampling;
 pub mod scene;
+pub mod scene_file;
 pub mod shape;
 mod validate;
 pub mod vec3;

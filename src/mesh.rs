@@ -4,6 +4,7 @@
 //! split into triangles as fans; faces without area are skipped and counted, so a caller
 //! can report them.
 
+mod check;
 mod obj;
 mod ply;
 
@@ -14,7 +15,8 @@ use std::path::Path;
 /// A triangle mesh as read from a file, in the file's own coordinates.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct MeshData {
-    /// The vertex positions, every coordinate finite.
+    /// The vertex positions, every coordinate finite: a PLY file's in its order; an OBJ
+    /// file's those its faces use, in the order first used, object after object.
     pub positions: Vec<Vec3<f64>>,
     /// The triangles, as indices into `positions`, each with a non-zero area.
     pub triangles: Vec<[u32; 3]>,
@@ -28,7 +30,9 @@ pub struct MeshData {
 /// # Errors
 /// [`Error::Mesh`], naming the file and the element, for a file that is missing, of another
 /// format, truncated or garbled, with an index out of range, or with a coordinate that is
-/// NaN or infinite.
+/// NaN or infinite, a face of fewer than three vertices, or no triangle with area. Vertices
+/// and faces are numbered as the format counts them: from 0 in PLY, from 1 (with the line)
+/// in OBJ.
 pub fn load(path: &Path) -> Result<MeshData> {
     let extension = path
         .extension()

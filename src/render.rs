@@ -10,9 +10,10 @@ mod seed;
 mod settings;
 mod trace;
 
+pub use crate::image::Rect;
 pub use reference::render_reference;
 pub use seed::sample_seed;
-pub use settings::{Rect, RenderSettings};
+pub use settings::RenderSettings;
 pub use trace::Tracer;
 
 use crate::camera::Camera;

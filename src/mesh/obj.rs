@@ -1,13 +1,148 @@
-//! Reading OBJ files.
+//! Reading Wavefront OBJ files with `tobj`.
+//!
+//! Only positions and faces are read: materials (`mtllib`) are ignored, so a missing `.mtl`
+//! file is no error. Every object and group of the file goes into one mesh. `l` lines count
+//! as faces, as `tobj` reads them.
 
 use super::MeshData;
+use super::check::{Problem, Triangulator, check_positions};
 use crate::error::{Error, Result};
+use crate::vec3::Vec3;
+use std::fs::File;
+use std::io::{BufRead, BufReader};
 use std::path::Path;
 
 /// Loads an OBJ mesh.
 pub(super) fn load(path: &Path) -> Result<MeshData> {
-    Err(Error::Mesh {
+    let fail = |message: String| Error::Mesh {
         path: path.to_path_buf(),
-        message: "OBJ meshes cannot be read yet".into(),
+        message,
+    };
+    let file = File::open(path).map_err(|e| fail(format!("cannot open: {e}")))?;
+    // Faces are kept whole (no `triangulate`) so that they can be checked and numbered as in
+    // the file, then split into fans by the same code as PLY's.
+    let options = tobj::LoadOptions {
+        triangulate: false,
+        single_index: false,
+        ignore_points: false,
+        ignore_lines: false,
+    };
+    let no_materials = |_: &Path| Ok(Default::default());
+    let (models, _) =
+        tobj::load_obj_buf(&mut BufReader::new(file), &options, no_materials).map_err(|e| match e {
+            tobj::LoadError::FaceVertexOutOfBounds => fail(locate(path, &e.to_string())),
+            _ => fail(format!("cannot parse: {e}")),
+        })?;
+
+    // tobj keeps, per model, the vertices its faces use, in the order they are first used; the
+    // models' vertices are put one after the other and their indices offset to match.
+    let mut positions = Vec::new();
+    let mut faces: Vec<Vec<u32>> = Vec::new();
+    for model in &models {
+        let mesh = &model.mesh;
+        let offset = u32::try_from(positions.len()).map_err(|_| fail(too_many()))?;
+        positions.extend(
+            mesh.positions
+                .chunks_exact(3)
+                .map(|p| Vec3::new(p[0], p[1], p[2])),
+        );
+        let arities = if mesh.face_arities.is_empty() {
+            vec![3; mesh.indices.len() / 3]
+        } else {
+            mesh.face_arities.clone()
+        };
+        let mut rest = mesh.indices.as_slice();
+        for arity in arities {
+            let (face, tail) = rest.split_at(arity as usize);
+            faces.push(face.iter().map(|&i| i + offset).collect());
+            rest = tail;
+        }
+    }
+    if u32::try_from(positions.len()).is_err() {
+        return Err(fail(too_many()));
+    }
+
+    // tobj's numbering of vertices is not the file's, so a problem is located in the text.
+    let located = |problem: Problem| fail(locate(path, &problem.to_string()));
+    check_positions(&positions).map_err(located)?;
+    let mut mesh = Triangulator::new(positions);
+    for (number, face) in faces.into_iter().enumerate() {
+        mesh.add_face(number, face.into_iter().map(i64::from))
+            .map_err(located)?;
+    }
+    mesh.finish().map_err(|p| fail(p.to_string()))
+}
+
+/// The message for a mesh whose vertices cannot be indexed by `u32`.
+fn too_many() -> String {
+    format!("more than {} vertices", u32::MAX)
+}
+
+/// Finds the first line of the OBJ file at `path` with a non-finite coordinate, a face of
+/// fewer than three vertices or a vertex index out of range, and describes it with its line
+/// number and the file's numbering (from 1, as OBJ indices count); `fallback` if none is found.
+fn locate(path: &Path, fallback: &str) -> String {
+    let Ok(file) = File::open(path) else {
+        return fallback.to_owned();
+    };
+    let lines: Vec<String> = BufReader::new(file).lines().map_while(|l| l.ok()).collect();
+    let vertices = lines
+        .iter()
+        .filter(|l| l.split_whitespace().next() == Some("v"))
+        .count();
+    let (mut vertex, mut face) = (0, 0);
+    for (number, line) in lines.iter().enumerate() {
+        let mut words = line.split_whitespace();
+        let line = number + 1;
+        match words.next() {
+            Some("v") => {
+                vertex += 1;
+                for (axis, word) in ['x', 'y', 'z'].into_iter().zip(words) {
+                    if let Ok(value) = word.parse::<f64>()
+                        && !value.is_finite()
+                    {
+                        let problem = Problem::NonFinite { vertex, axis, value };
+                        return format!("line {line}: {problem}");
+                    }
+                }
+            }
+            Some("f" | "l") => {
+                face += 1;
+                let problem = face_problem(words, face, vertex, vertices);
+                if let Some(problem) = problem {
+                    return format!("line {line}: {problem}");
+                }
+            }
+            _ => {}
+        }
+    }
+    fallback.to_owned()
+}
+
+/// What is wrong with face number `face`, whose vertex references are `words`, when
+/// `defined` vertices precede it (negative indices count back from there) and the file has
+/// `vertices`.
+fn face_problem<'a>(
+    words: impl Iterator<Item = &'a str>,
+    face: usize,
+    defined: usize,
+    vertices: usize,
+) -> Option<Problem> {
+    let indices: Vec<i64> = words.filter_map(|w| w.split('/').next()?.parse().ok()).collect();
+    if indices.len() < 3 {
+        return Some(Problem::TooFewVertices {
+            face,
+            count: indices.len(),
+        });
+    }
+    let defined = i64::try_from(defined).unwrap_or(i64::MAX);
+    let vertices_i = i64::try_from(vertices).unwrap_or(i64::MAX);
+    indices.into_iter().find_map(|index| {
+        let resolved = if index < 0 { defined + index + 1 } else { index };
+        (!(1..=vertices_i).contains(&resolved)).then_some(Problem::IndexOutOfRange {
+            face,
+            index,
+            vertices,
+        })
     })
 }

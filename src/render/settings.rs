@@ -1,4 +1,4 @@
-//! Render settings and image regions.
+//! Render settings.
 
 use crate::error::{Error, Result};
 
@@ -66,44 +66,6 @@ impl Default for RenderSettings {
             max_depth: 10,
             seed: 0,
             progress: false,
-        }
-    }
-}
-
-/// A rectangle of pixels: columns `x..x + width`, rows `y..y + height` (rows from the top).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Rect {
-    /// First column.
-    pub x: usize,
-    /// First row.
-    pub y: usize,
-    /// Number of columns.
-    pub width: usize,
-    /// Number of rows.
-    pub height: usize,
-}
-
-impl Rect {
-    /// The whole `width × height` image.
-    pub fn full(width: usize, height: usize) -> Self {
-        Self {
-            x: 0,
-            y: 0,
-            width,
-            height,
-        }
-    }
-
-    /// Checks the rectangle is non-empty and inside a `width × height` image.
-    pub fn check_inside(&self, width: usize, height: usize) -> Result<()> {
-        let fits =
-            |a: usize, len: usize, max: usize| len > 0 && a.checked_add(len).is_some_and(|end| end <= max);
-        if fits(self.x, self.width, width) && fits(self.y, self.height, height) {
-            Ok(())
-        } else {
-            Err(Error::InvalidSettings(format!(
-                "tile {self:?} is empty or outside the {width}×{height} image"
-            )))
         }
     }
 }

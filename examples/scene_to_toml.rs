@@ -1,0 +1,211 @@
+//! Writes each example's scene, as built in code, to `scenes/<example>.toml` (or to the
+//! folder given as the argument), with the example's camera and default settings.
+//!
+//! `cargo run --example scene_to_toml` regenerates the committed files; every `f64` is
+//! written in the shortest form that reads back to the same bits, so a scene built from
+//! its file renders the same image as the code (`tests/scene_files.rs` checks it).
+
+mod scenes;
+
+use raytrace::material::Reflectance;
+use raytrace::prelude::*;
+use raytrace::scene_file::{
+    BackgroundSpec, CameraSpec, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec, RenderOptions, SceneFile,
+};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// One example: its name, what it shows, its scene, camera and default settings.
+struct Example {
+    name: &'static str,
+    about: &'static str,
+    scene: EnumScene<f64>,
+    camera: CameraSpec,
+    width: usize,
+    spp: u32,
+    max_depth: u32,
+}
+
+fn examples() -> raytrace::Result<Vec<Example>> {
+    let screen = || CameraSpec::Screen { eye: None };
+    let spec = |name, about, scene, spp, max_depth| Example {
+        name,
+        about,
+        scene,
+        camera: screen(),
+        width: 800,
+        spp,
+        max_depth,
+    };
+    Ok(vec![
+        spec(
+            "four_mirrors",
+            "Four mirror spheres above a dim mirror floor (the specification's minimum scene).",
+            scenes::four_mirrors()?,
+            1,
+            10,
+        ),
+        spec(
+            "matte_spheres",
+            "Matte and mirror spheres on a matte ground (the specification's extension).",
+            scenes::matte_spheres()?,
+            16,
+            10,
+        ),
+        spec(
+            "glass",
+            "Solid and hollow glass spheres beside mirror and matte ones.",
+            scenes::glass()?,
+            32,
+            20,
+        ),
+        spec(
+            "plane_and_triangles",
+            "An infinite plane, a mirror pyramid and a matte tetrahedron of triangles, beside spheres.",
+            scenes::plane_and_triangles()?,
+            32,
+            20,
+        ),
+        spec(
+            "point_lights",
+            "Matte spheres lit by three coloured point lights under a dim sky.",
+            scenes::point_lights()?,
+            16,
+            10,
+        ),
+        Example {
+            name: "random_spheres",
+            about: "Ray Tracing in One Weekend's final scene, generated from seed 0: about 480 random spheres.",
+            scene: scenes::random_spheres(0)?,
+            // scenes::random_spheres_camera: from (13, 2, 3) at the origin, 20°, 16:9.
+            camera: CameraSpec::LookAt {
+                from: [13.0, 2.0, 3.0],
+                at: [0.0; 3],
+                up: [0.0, 1.0, 0.0],
+                vfov: 20.0,
+                aspect: 16.0 / 9.0,
+            },
+            width: 400,
+            spp: 10,
+            max_depth: 50,
+        },
+    ])
+}
+
+/// The scene file describing `e`; materials are named by kind and numbered, one entry
+/// per distinct material.
+fn to_file(e: &Example) -> SceneFile {
+    let mut file = SceneFile::default();
+    *file.render_mut() = RenderOptions {
+        width: e.width,
+        spp: e.spp,
+        max_depth: e.max_depth,
+        ..RenderOptions::default()
+    };
+    file.camera = e.camera.clone();
+    file.background = match *e.scene.background() {
+        Background::Solid(c) => BackgroundSpec::Solid { color: c.to_f64() },
+        Background::Sky { horizon, zenith } => BackgroundSpec::Sky {
+            horizon: horizon.to_f64(),
+            zenith: zenith.to_f64(),
+        },
+    };
+    let mut named: Vec<(MaterialKind<f64>, String)> = Vec::new();
+    for o in e.scene.objects() {
+        let material = match named.iter().find(|(m, _)| *m == o.material) {
+            Some((_, name)) => name.clone(),
+            None => {
+                let (kind, spec) = material(&o.material);
+                let name = format!("{kind}_{}", named.len());
+                file.materials.insert(name.clone(), spec);
+                named.push((o.material, name.clone()));
+                name
+            }
+        };
+        file.objects.push(match o.shape {
+            ShapeKind::Sphere(s) => ObjectSpec::Sphere {
+                center: s.center().to_f64(),
+                radius: s.radius(),
+                material,
+            },
+            ShapeKind::Plane(p) => ObjectSpec::Plane {
+                point: p.point().to_f64(),
+                normal: p.normal().to_f64(),
+                material,
+            },
+            ShapeKind::Triangle(t) => {
+                let [a, b, c] = t.vertices().map(|v| v.to_f64());
+                ObjectSpec::Triangle { a, b, c, material }
+            }
+        });
+    }
+    for l in e.scene.lights() {
+        file.lights.push(LightSpec {
+            position: l.position().to_f64(),
+            intensity: l.intensity().to_f64(),
+        });
+    }
+    file
+}
+
+fn material(m: &MaterialKind<f64>) -> (&'static str, MaterialSpec) {
+    match *m {
+        MaterialKind::Mirror(m) => (
+            "mirror",
+            MaterialSpec::Mirror {
+                albedo: m.albedo().to_f64(),
+            },
+        ),
+        MaterialKind::Lambertian(m) => (
+            "matte",
+            MaterialSpec::Lambertian {
+                albedo: m.albedo().to_f64(),
+            },
+        ),
+        MaterialKind::Dielectric(m) => (
+            "glass",
+            MaterialSpec::Dielectric {
+                index: m.refractive_index(),
+                albedo: (m.albedo() != Vec3::splat(1.0)).then(|| m.albedo().to_f64()),
+                fresnel: match m.reflectance() {
+                    Reflectance::Schlick => FresnelSpec::Schlick,
+                    Reflectance::Fresnel => FresnelSpec::Exact,
+                },
+            },
+        ),
+    }
+}
+
+fn run() -> raytrace::Result<()> {
+    let out = std::env::args_os()
+        .nth(1)
+        .map_or_else(|| PathBuf::from("scenes"), PathBuf::from);
+    std::fs::create_dir_all(&out).map_err(|source| raytrace::Error::Io {
+        path: out.clone(),
+        source,
+    })?;
+    for e in examples()? {
+        let path = out.join(format!("{}.toml", e.name));
+        let text = format!(
+            "# {}\n# Written by `cargo run --example scene_to_toml` from examples/scenes/mod.rs.\n\n{}",
+            e.about,
+            to_file(&e).to_toml()
+        );
+        std::fs::write(&path, text).map_err(|source| raytrace::Error::Io {
+            path: path.clone(),
+            source,
+        })?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    match run() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

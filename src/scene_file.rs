@@ -1,0 +1,183 @@
+//! Scenes from TOML files: the format `docs/SCENE_FORMAT.md` describes.
+//!
+//! [`SceneFile::load`] reads and parses a file (syntax and types, reported at a line and
+//! column); [`SceneFile::build`] checks every value (reported at a field path such as
+//! `objects[3].radius`), loads the meshes and builds the scene, camera and settings in
+//! the scalar asked for.
+//!
+//! ```
+//! use raytrace::scene_file::SceneFile;
+//! use std::path::Path;
+//!
+//! let text = r#"
+//!     [render]
+//!     width = 40
+//!
+//!     [materials.gold]
+//!     type = "mirror"
+//!     albedo = [0.95, 0.78, 0.35]
+//!
+//!     [[objects]]
+//!     type = "sphere"
+//!     center = [0.0, 0.0, -3.0]
+//!     radius = 1.0
+//!     material = "gold"
+//! "#;
+//! let file = SceneFile::parse(text, Path::new("inline.toml"))?;
+//! let built = file.build::<f64>()?;
+//! assert_eq!(built.summary.spheres, 1);
+//! let image = raytrace::render(&built.scene, &built.camera, &built.settings)?.image;
+//! assert_eq!((image.width(), image.height()), (40, 20));
+//! # Ok::<(), raytrace::Error>(())
+//! ```
+
+mod build;
+mod camera;
+mod check;
+mod entries;
+mod integer;
+mod location;
+mod model;
+mod transform;
+
+pub use build::{Built, Summary};
+pub use camera::FileCamera;
+pub use model::{
+    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
+    RenderOptions, Scale, Triple,
+};
+pub use transform::Placement;
+
+use crate::advice::{Advice, advise};
+use crate::error::{Error, Result};
+use crate::float::Float;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// A scene file as parsed: every section, with the defaults filled in.
+///
+/// The fields are the file's sections; [`SceneFile::build`] checks their values.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SceneFile {
+    /// `[render]`: image width, samples, depth, seed, precision, acceleration.
+    pub render: RenderOptions,
+    /// `[camera]`.
+    pub camera: CameraSpec,
+    /// `[background]`.
+    pub background: BackgroundSpec,
+    /// `[materials.NAME]`: the materials objects refer to by name.
+    #[serde(deserialize_with = "materials", skip_serializing_if = "BTreeMap::is_empty")]
+    pub materials: BTreeMap<String, MaterialSpec>,
+    /// `[[objects]]`, in the order they are added to the scene.
+    #[serde(deserialize_with = "objects", skip_serializing_if = "Vec::is_empty")]
+    pub objects: Vec<ObjectSpec>,
+    /// `[[lights]]`: point lights.
+    #[serde(deserialize_with = "lights", skip_serializing_if = "Vec::is_empty")]
+    pub lights: Vec<LightSpec>,
+    /// Where the file is: for messages and for mesh paths relative to its folder.
+    #[serde(skip)]
+    path: PathBuf,
+}
+
+fn materials<'de, D: serde::Deserializer<'de>>(d: D) -> Result<BTreeMap<String, MaterialSpec>, D::Error> {
+    entries::table(d, "materials")
+}
+
+fn objects<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<ObjectSpec>, D::Error> {
+    entries::array(d, "objects")
+}
+
+fn lights<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<LightSpec>, D::Error> {
+    entries::array(d, "lights")
+}
+
+impl SceneFile {
+    /// The widest image [`advise_precision`] renders: its reference render is slow.
+    pub const ADVICE_WIDTH: usize = 160;
+    /// The most samples per pixel [`advise_precision`] renders.
+    pub const ADVICE_SPP: u32 = 4;
+
+    /// Reads and parses the scene file at `path`.
+    ///
+    /// # Errors
+    /// [`Error::Io`] if it cannot be read; [`Error::SceneFile`] as [`SceneFile::parse`].
+    pub fn load(path: &Path) -> Result<SceneFile> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Self::parse(&text, path)
+    }
+
+    /// Parses `text`; `path` names the file in messages and is the base of relative mesh
+    /// paths. Only the syntax and the types are checked here, the values by
+    /// [`SceneFile::build`].
+    ///
+    /// # Errors
+    /// [`Error::SceneFile`] at `line L, column C` for malformed TOML, an unknown key, a
+    /// missing key or a value of the wrong type.
+    pub fn parse(text: &str, path: &Path) -> Result<SceneFile> {
+        let mut file: SceneFile = toml::from_str(text).map_err(|e| location::toml_error(path, text, &e))?;
+        file.path = path.to_path_buf();
+        Ok(file)
+    }
+
+    /// The file as TOML, which [`SceneFile::parse`] reads back to an equal `SceneFile`
+    /// (every `f64` is written in the shortest form that rounds back to it).
+    ///
+    /// # Panics
+    /// Never: every value of the model has a TOML form (integers past `i64::MAX` are
+    /// written as strings).
+    pub fn to_toml(&self) -> String {
+        toml::to_string(self).expect("every scene file value has a TOML form")
+    }
+
+    /// The file's path, as given to [`SceneFile::load`] or [`SceneFile::parse`].
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// The `[render]` options.
+    pub fn render(&self) -> &RenderOptions {
+        &self.render
+    }
+
+    /// The `[render]` options, to override from a command line before [`SceneFile::build`].
+    pub fn render_mut(&mut self) -> &mut RenderOptions {
+        &mut self.render
+    }
+
+    /// Checks every value, loads the meshes and builds the scene, the camera and the
+    /// settings in scalar `F`. `[render] precision` is not read here: the caller chooses
+    /// `F` (for `"auto"`, by [`advise_precision`]).
+    ///
+    /// # Errors
+    /// [`Error::SceneFile`] at the field's path (`objects[3].radius`,
+    /// `materials.gold.albedo`, `render.width`) for a value outside its domain, a material
+    /// name no `[materials]` entry defines, a mesh that cannot be loaded (its error kept in
+    /// the message) or a value that does not survive rounding to `F`.
+    pub fn build<F: Float>(&self) -> Result<Built<F>> {
+        build::build(self)
+    }
+}
+
+/// The scalar `[render] precision = "auto"` resolves to: [`advise`] on the scene built in
+/// `f64`, rendered at most [`SceneFile::ADVICE_WIDTH`] pixels wide with at most
+/// [`SceneFile::ADVICE_SPP`] samples per pixel (the reference render is about ten times
+/// slower than `f64`), with the file's depth and seed. `Advice::recommended` is the answer.
+///
+/// # Errors
+/// As [`SceneFile::build`], and if the scene does not survive rounding to `f32`.
+pub fn advise_precision(file: &SceneFile) -> Result<Advice> {
+    let mut small = file.clone();
+    let render = small.render_mut();
+    render.width = render.width.min(SceneFile::ADVICE_WIDTH);
+    render.spp = render.spp.min(SceneFile::ADVICE_SPP);
+    let built = small.build::<f64>()?;
+    advise(&built.scene, &built.camera, &built.settings)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,281 @@
+//! The scene file's data model: what TOML deserializes into, one type per section.
+//!
+//! Only the shape and the types of values are checked here; their domains (a radius > 0,
+//! an albedo in `[0, 1]`, a material that exists) are checked when the scene is built.
+
+use crate::scene::Acceleration;
+use serde::{Deserialize, Serialize};
+
+/// A point, a direction or a colour: `[x, y, z]` or `[r, g, b]`.
+pub type Triple = [f64; 3];
+
+/// The `[render]` section: image size and how to render it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct RenderOptions {
+    /// Image width in pixels (the height follows from the camera).
+    #[serde(with = "super::integer")]
+    pub width: usize,
+    /// Samples (rays) per pixel, at least 1.
+    pub spp: u32,
+    /// The most bounces a path may take.
+    pub max_depth: u32,
+    /// The seed of every pixel's random stream.
+    #[serde(with = "super::integer")]
+    pub seed: u64,
+    /// The scalar to render in.
+    pub precision: FilePrecision,
+    /// How the scene is intersected.
+    #[serde(with = "AccelerationName")]
+    pub acceleration: Acceleration,
+}
+
+/// 800 pixels wide, 1 sample per pixel, depth 10, seed 0, `f64`, automatic acceleration:
+/// the specification's minimum render.
+impl Default for RenderOptions {
+    fn default() -> Self {
+        Self {
+            width: 800,
+            spp: 1,
+            max_depth: 10,
+            seed: 0,
+            precision: FilePrecision::F64,
+            acceleration: Acceleration::Auto,
+        }
+    }
+}
+
+/// The scalar a scene file asks to be rendered in.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum FilePrecision {
+    /// Single precision.
+    F32,
+    /// Double precision (the default).
+    #[default]
+    F64,
+    /// Whichever [`advise_precision`](super::advise_precision) measures to be enough.
+    Auto,
+}
+
+/// The library's [`Acceleration`] under the names the file uses.
+#[derive(Serialize, Deserialize)]
+#[serde(remote = "Acceleration", rename_all = "lowercase")]
+enum AccelerationName {
+    Auto,
+    #[serde(alias = "list")]
+    Linear,
+    Bvh,
+}
+
+/// The `[camera]` section.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum CameraSpec {
+    /// The specification's camera: the eye at the origin (or at `eye`), looking down −z
+    /// at a 4×2 screen at distance 1; the image is `width × width/2`.
+    Screen {
+        /// Where the eye is moved to (the screen moves with it).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        eye: Option<Triple>,
+    },
+    /// A pinhole camera at `from` looking at `at`.
+    LookAt {
+        /// The eye.
+        from: Triple,
+        /// The point seen at the centre of the image.
+        at: Triple,
+        /// Roughly up (default `[0, 1, 0]`).
+        #[serde(default = "y_up")]
+        up: Triple,
+        /// The vertical field of view in degrees, in `(0, 180)`.
+        vfov: f64,
+        /// Width over height: the image is `width × ⌊width/aspect⌋` pixels.
+        aspect: f64,
+    },
+}
+
+fn y_up() -> Triple {
+    [0.0, 1.0, 0.0]
+}
+
+impl Default for CameraSpec {
+    fn default() -> Self {
+        Self::Screen { eye: None }
+    }
+}
+
+/// The `[background]` section: what a ray that hits nothing sees.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum BackgroundSpec {
+    /// A gradient from `horizon` (straight down) to `zenith` (straight up).
+    Sky {
+        /// The colour straight down (default white).
+        #[serde(default = "white")]
+        horizon: Triple,
+        /// The colour straight up (default `[0.5, 0.7, 1.0]`).
+        #[serde(default = "sky_blue")]
+        zenith: Triple,
+    },
+    /// One colour in every direction.
+    Solid {
+        /// The colour.
+        color: Triple,
+    },
+}
+
+fn white() -> Triple {
+    [1.0; 3]
+}
+
+fn sky_blue() -> Triple {
+    [0.5, 0.7, 1.0]
+}
+
+/// The library's default sky ([`Background::default`](crate::Background)).
+impl Default for BackgroundSpec {
+    fn default() -> Self {
+        Self::Sky {
+            horizon: white(),
+            zenith: sky_blue(),
+        }
+    }
+}
+
+/// A named material, `[materials.NAME]`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum MaterialSpec {
+    /// A perfect mirror.
+    Mirror {
+        /// Each channel in `[0, 1]`.
+        albedo: Triple,
+    },
+    /// A matte surface.
+    Lambertian {
+        /// Each channel in `[0, 1]`.
+        albedo: Triple,
+    },
+    /// Glass-like: reflects or refracts.
+    Dielectric {
+        /// The refractive index relative to the outside, `> 0`.
+        index: f64,
+        /// The tint, each channel in `[0, 1]` (default white: clear).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        albedo: Option<Triple>,
+        /// How the reflectance is computed.
+        #[serde(default)]
+        fresnel: FresnelSpec,
+    },
+}
+
+/// How a dielectric computes its reflectance.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum FresnelSpec {
+    /// Schlick's approximation (the default).
+    #[default]
+    Schlick,
+    /// The exact Fresnel equations for unpolarised light.
+    Exact,
+}
+
+/// One `[[objects]]` entry: a shape and the name of its material.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum ObjectSpec {
+    /// A sphere.
+    Sphere {
+        /// The centre.
+        center: Triple,
+        /// The radius, `> 0`.
+        radius: f64,
+        /// The material's name.
+        material: String,
+    },
+    /// An infinite plane.
+    Plane {
+        /// A point on the plane.
+        point: Triple,
+        /// The normal (any non-zero length), pointing to the front face.
+        normal: Triple,
+        /// The material's name.
+        material: String,
+    },
+    /// A triangle, front face where `a → b → c` runs counter-clockwise.
+    Triangle {
+        /// The first vertex.
+        a: Triple,
+        /// The second vertex.
+        b: Triple,
+        /// The third vertex.
+        c: Triple,
+        /// The material's name.
+        material: String,
+    },
+    /// A triangle mesh from an OBJ or PLY file, scaled, then rotated, then translated.
+    Mesh {
+        /// The mesh file, relative to the scene file's folder.
+        file: String,
+        /// A factor for every axis, or one per axis.
+        #[serde(default)]
+        scale: Scale,
+        /// Degrees about x, then y, then z.
+        #[serde(default)]
+        rotate: Triple,
+        /// Added last.
+        #[serde(default)]
+        translate: Triple,
+        /// The material's name.
+        material: String,
+    },
+}
+
+impl ObjectSpec {
+    /// The name of the object's material.
+    pub fn material(&self) -> &str {
+        match self {
+            Self::Sphere { material, .. }
+            | Self::Plane { material, .. }
+            | Self::Triangle { material, .. }
+            | Self::Mesh { material, .. } => material,
+        }
+    }
+}
+
+/// A mesh's scale: one factor for all axes (`scale = 2`) or one per axis (`[1, 2, 1]`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged, expecting = "a number or an array of three numbers")]
+pub enum Scale {
+    /// The same factor on every axis.
+    Uniform(f64),
+    /// A factor per axis.
+    PerAxis(Triple),
+}
+
+impl Default for Scale {
+    fn default() -> Self {
+        Self::Uniform(1.0)
+    }
+}
+
+impl Scale {
+    /// The factor per axis.
+    pub fn factors(self) -> Triple {
+        match self {
+            Self::Uniform(s) => [s; 3],
+            Self::PerAxis(s) => s,
+        }
+    }
+}
+
+/// One `[[lights]]` entry: a point light.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightSpec {
+    /// Where it is.
+    pub position: Triple,
+    /// Its radiant intensity per channel, `≥ 0`.
+    pub intensity: Triple,
+}

@@ -1,0 +1,391 @@
+//! Scene files: each example's file builds the example's scene (the same image bits as
+//! the code, in f32 and f64), each kind of mistake is reported where it is, and no input
+//! makes the parser panic.
+
+#[path = "../examples/scenes/mod.rs"]
+mod scenes;
+
+use proptest::prelude::*;
+use raytrace::prelude::*;
+use raytrace::scene_file::{
+    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
+    RenderOptions, Scale, SceneFile,
+};
+use raytrace::{Acceleration, Image};
+use std::path::{Path, PathBuf};
+
+const WIDTH: usize = 48;
+const SPP: u32 = 2;
+
+fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(format!("{name}.toml"))
+}
+
+/// The example's file rendered small, in `F`.
+fn from_file<F: Float>(name: &str) -> (Image, RenderOptions) {
+    let mut file = SceneFile::load(&scene_path(name)).unwrap();
+    let defaults = file.render().clone();
+    file.render_mut().width = WIDTH;
+    file.render_mut().spp = SPP;
+    let built = file.build::<F>().unwrap();
+    (
+        render(&built.scene, &built.camera, &built.settings)
+            .unwrap()
+            .image,
+        defaults,
+    )
+}
+
+/// The code-built scene rendered the same way, in `F`.
+fn from_code<F: Float>(name: &str, max_depth: u32) -> Image {
+    let settings = RenderSettings::new(SPP, max_depth, 0).unwrap();
+    let spec = |scene: raytrace::Result<EnumScene<F>>| {
+        render(
+            &scene.unwrap(),
+            &ScreenCamera::with_width(WIDTH).unwrap(),
+            &settings,
+        )
+    };
+    let rendered = match name {
+        "four_mirrors" => spec(scenes::four_mirrors()),
+        "matte_spheres" => spec(scenes::matte_spheres()),
+        "glass" => spec(scenes::glass()),
+        "plane_and_triangles" => spec(scenes::plane_and_triangles()),
+        "point_lights" => spec(scenes::point_lights()),
+        "random_spheres" => render(
+            &scenes::random_spheres::<F>(0).unwrap(),
+            &scenes::random_spheres_camera::<F>(WIDTH).unwrap(),
+            &settings,
+        ),
+        _ => unreachable!("{name}"),
+    };
+    rendered.unwrap().image
+}
+
+/// Each example's name and its defaults (examples/*.rs): width, spp, max depth.
+const EXAMPLES: [(&str, usize, u32, u32); 6] = [
+    ("four_mirrors", 800, 1, 10),
+    ("matte_spheres", 800, 16, 10),
+    ("glass", 800, 32, 20),
+    ("plane_and_triangles", 800, 32, 20),
+    ("point_lights", 800, 16, 10),
+    ("random_spheres", 400, 10, 50),
+];
+
+fn same_image_as_code<F: Float>() {
+    for (name, width, spp, max_depth) in EXAMPLES {
+        let (file, defaults) = from_file::<F>(name);
+        assert_eq!(
+            (defaults.width, defaults.spp, defaults.max_depth, defaults.seed),
+            (width, spp, max_depth, 0),
+            "{name}: the file's [render] is the example's defaults"
+        );
+        assert_eq!(file, from_code::<F>(name, max_depth), "{name} in {}", F::NAME);
+    }
+}
+
+#[test]
+fn every_example_file_renders_the_code_built_image_in_f64() {
+    same_image_as_code::<f64>();
+}
+
+#[test]
+fn every_example_file_renders_the_code_built_image_in_f32() {
+    same_image_as_code::<f32>();
+}
+
+#[test]
+fn summaries_count_what_the_files_hold() {
+    let built = SceneFile::load(&scene_path("plane_and_triangles"))
+        .unwrap()
+        .build::<f64>()
+        .unwrap();
+    let s = built.summary;
+    assert_eq!(
+        (s.spheres, s.planes, s.triangles, s.meshes, s.lights),
+        (2, 1, 8, 0, 0)
+    );
+    let b = s.bounds.unwrap();
+    // Shapes pad their boxes by a few units of rounding.
+    assert!((b.min.y + 0.8).abs() < 1e-12, "{b:?}");
+    assert!(
+        (b.max.x - 4.5).abs() < 1e-12,
+        "the sphere at x = 3.5 of radius 1: {b:?}"
+    );
+    assert!(!s.uses_bvh);
+    let many = SceneFile::load(&scene_path("random_spheres"))
+        .unwrap()
+        .build::<f32>()
+        .unwrap();
+    assert!(many.summary.uses_bvh && many.summary.spheres > 400);
+}
+
+/// A scene file error's location and message.
+fn error_at<T: std::fmt::Debug>(r: raytrace::Result<T>) -> (String, String) {
+    match r {
+        Err(raytrace::Error::SceneFile {
+            path,
+            location,
+            message,
+        }) => {
+            assert_eq!(path, Path::new("bad.toml"));
+            (location, message)
+        }
+        other => panic!("expected a scene file error, got {other:?}"),
+    }
+}
+
+fn parse(text: &str) -> raytrace::Result<SceneFile> {
+    SceneFile::parse(text, Path::new("bad.toml"))
+}
+
+const GOOD: &str = include_str!("../scenes/four_mirrors.toml");
+
+#[test]
+fn malformed_toml_is_reported_at_its_line_and_column() {
+    let (location, message) = error_at(parse("[render]\nwidth = 800\nspp = [1, 2\n"));
+    assert_eq!(location, "line 3, column 12");
+    assert!(message.contains("unclosed array"), "{message}");
+    let (location, _) = error_at(parse("[render]\n  width == 3\n"));
+    assert!(location.starts_with("line 2, column"), "{location}");
+}
+
+#[test]
+fn an_unknown_key_is_named() {
+    let text = GOOD.replace("max_depth = 10", "max_dpeth = 10");
+    let (location, message) = error_at(parse(&text));
+    assert_eq!(location, "line 7, column 1");
+    assert!(message.contains("unknown field `max_dpeth`"), "{message}");
+    let text = GOOD.replace("radius = 0.6", "radius = 0.6\ncolour = 3");
+    let (location, message) = error_at(parse(&text));
+    assert!(
+        message.starts_with("objects[1]: unknown field `colour`"),
+        "{message}"
+    );
+    // The key under the second `[[objects]]`, the line after `radius = 0.6` (line 49).
+    assert_eq!(location, "line 50, column 1");
+}
+
+#[test]
+fn a_wrong_type_is_named() {
+    let (location, message) = error_at(parse("[render]\nspp = \"many\"\n"));
+    assert_eq!(location, "line 2, column 7");
+    assert!(
+        message.contains("`spp`") && message.contains("invalid type"),
+        "{message}"
+    );
+    let text = GOOD.replace("radius = 0.6", "radius = true");
+    let (_, message) = error_at(parse(&text));
+    assert!(
+        message.starts_with("objects[1].radius: invalid type"),
+        "{message}"
+    );
+}
+
+#[test]
+fn an_invalid_value_is_reported_at_its_field_path() {
+    let text = GOOD.replace("radius = 1.0\n", "radius = -1\n");
+    assert_eq!(
+        error_at(parse(&text).unwrap().build::<f64>()),
+        ("objects[3].radius".into(), "must be > 0 (got -1)".into())
+    );
+    let text = GOOD.replace("albedo = [0.5, 0.65, 0.95]", "albedo = [0.5, nan, 0.95]");
+    let (location, message) = error_at(parse(&text).unwrap().build::<f32>());
+    assert_eq!(location, "materials.mirror_3.albedo");
+    assert!(message.contains("[0, 1]") && message.contains("NaN"), "{message}");
+    let text = GOOD.replace("width = 800", "width = 0");
+    assert_eq!(error_at(parse(&text).unwrap().build::<f64>()).0, "render.width");
+}
+
+#[test]
+fn an_unknown_material_is_reported_with_the_known_ones() {
+    let text = GOOD.replace("material = \"mirror_2\"", "material = \"gold\"");
+    let (location, message) = error_at(parse(&text).unwrap().build::<f64>());
+    assert_eq!(location, "objects[2].material");
+    assert!(
+        message.contains("`gold`") && message.contains("`mirror_0`"),
+        "{message}"
+    );
+}
+
+#[test]
+fn a_mesh_error_is_passed_through_with_the_file_field() {
+    let text = format!(
+        "{GOOD}\n[[objects]]\ntype = \"mesh\"\nfile = \"meshes/bunny.obj\"\nscale = 2\nmaterial = \"mirror_0\"\n"
+    );
+    let file = SceneFile::parse(&text, Path::new("bad.toml")).unwrap();
+    let (location, message) = error_at(file.build::<f64>());
+    assert_eq!(location, "objects[5].file");
+    assert!(message.contains("bunny.obj"), "{message}");
+}
+
+fn triple(range: std::ops::Range<f64>) -> impl Strategy<Value = [f64; 3]> {
+    [range.clone(), range.clone(), range]
+}
+
+/// Any finite `f64`, tiny and huge ones included.
+fn finite() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        -1e3..1e3f64,
+        any::<f64>().prop_filter("finite", |x| x.is_finite())
+    ]
+}
+
+fn any_file() -> impl Strategy<Value = SceneFile> {
+    let render = (1..5000usize, 1..100u32, 0..1000u32, any::<u64>(), 0..3u8, 0..3u8).prop_map(
+        |(width, spp, max_depth, seed, p, a)| RenderOptions {
+            width,
+            spp,
+            max_depth,
+            seed,
+            precision: [FilePrecision::F32, FilePrecision::F64, FilePrecision::Auto][p as usize],
+            acceleration: [Acceleration::Auto, Acceleration::Linear, Acceleration::Bvh][a as usize],
+        },
+    );
+    let camera = prop_oneof![
+        proptest::option::of([finite(), finite(), finite()]).prop_map(|eye| CameraSpec::Screen { eye }),
+        (
+            [finite(), finite(), finite()],
+            triple(-5.0..5.0),
+            triple(-1.0..1.0),
+            1.0..179.0f64,
+            0.1..10.0f64
+        )
+            .prop_map(|(from, at, up, vfov, aspect)| CameraSpec::LookAt {
+                from,
+                at,
+                up,
+                vfov,
+                aspect
+            }),
+    ];
+    let background = prop_oneof![
+        (triple(0.0..2.0), triple(0.0..2.0))
+            .prop_map(|(horizon, zenith)| BackgroundSpec::Sky { horizon, zenith }),
+        triple(0.0..1.0).prop_map(|color| BackgroundSpec::Solid { color }),
+    ];
+    let material = prop_oneof![
+        triple(0.0..1.0).prop_map(|albedo| MaterialSpec::Mirror { albedo }),
+        triple(0.0..1.0).prop_map(|albedo| MaterialSpec::Lambertian { albedo }),
+        (finite(), proptest::option::of(triple(0.0..1.0)), any::<bool>()).prop_map(
+            |(index, albedo, exact)| {
+                MaterialSpec::Dielectric {
+                    index,
+                    albedo,
+                    fresnel: if exact {
+                        FresnelSpec::Exact
+                    } else {
+                        FresnelSpec::Schlick
+                    },
+                }
+            }
+        ),
+    ];
+    let name = "\\PC{1,10}";
+    let object = prop_oneof![
+        ([finite(), finite(), finite()], finite(), name).prop_map(|(center, radius, material)| {
+            ObjectSpec::Sphere {
+                center,
+                radius,
+                material,
+            }
+        }),
+        (triple(-9.0..9.0), triple(-1.0..1.0), name).prop_map(|(point, normal, material)| {
+            ObjectSpec::Plane {
+                point,
+                normal,
+                material,
+            }
+        }),
+        (triple(-9.0..9.0), triple(-9.0..9.0), triple(-9.0..9.0), name)
+            .prop_map(|(a, b, c, material)| ObjectSpec::Triangle { a, b, c, material }),
+        (
+            name,
+            prop_oneof![
+                finite().prop_map(Scale::Uniform),
+                triple(-3.0..3.0).prop_map(Scale::PerAxis)
+            ],
+            triple(-360.0..360.0),
+            triple(-9.0..9.0),
+            name
+        )
+            .prop_map(|(file, scale, rotate, translate, material)| ObjectSpec::Mesh {
+                file,
+                scale,
+                rotate,
+                translate,
+                material
+            }),
+    ];
+    let light = (triple(-9.0..9.0), triple(0.0..50.0))
+        .prop_map(|(position, intensity)| LightSpec { position, intensity });
+    (
+        render,
+        camera,
+        background,
+        proptest::collection::btree_map(name, material, 0..4),
+        proptest::collection::vec(object, 0..5),
+        proptest::collection::vec(light, 0..3),
+    )
+        .prop_map(|(render, camera, background, materials, objects, lights)| {
+            let mut file = SceneFile::parse("", Path::new("p.toml")).unwrap();
+            *file.render_mut() = render;
+            file.camera = camera;
+            file.background = background;
+            file.materials = materials;
+            file.objects = objects;
+            file.lights = lights;
+            file
+        })
+}
+
+proptest! {
+    #[test]
+    fn any_text_is_parsed_or_refused_without_panicking(text in "\\PC{0,200}") {
+        let _ = SceneFile::parse(&text, Path::new("p.toml")).map(|f| f.build::<f32>().map(|b| b.summary));
+    }
+
+    #[test]
+    fn any_edit_of_a_real_file_is_parsed_or_refused_without_panicking(
+        at in 0..GOOD.len(), cut in 0..20usize, insert in "[\\[\\]=\"a-z0-9.,\\n -]{0,12}",
+    ) {
+        let mut text = GOOD.as_bytes()[..at].to_vec();
+        text.extend_from_slice(insert.as_bytes());
+        text.extend_from_slice(&GOOD.as_bytes()[(at + cut).min(GOOD.len())..]);
+        let text = String::from_utf8_lossy(&text);
+        let _ = SceneFile::parse(&text, Path::new("p.toml")).map(|f| f.build::<f64>().map(|b| b.summary));
+    }
+
+    #[test]
+    fn every_file_reads_back_from_its_toml(file in any_file()) {
+        let text = file.to_toml();
+        prop_assert_eq!(SceneFile::parse(&text, Path::new("p.toml")).unwrap(), file, "{}", text);
+    }
+}
+
+#[test]
+fn the_format_documents_example_parses() {
+    let doc = include_str!("../docs/SCENE_FORMAT.md");
+    let (_, rest) = doc.split_once("```toml\n").unwrap();
+    let (example, _) = rest.split_once("```").unwrap();
+    let file = SceneFile::parse(example, Path::new("docs/example.toml")).unwrap();
+    assert_eq!(
+        (file.objects.len(), file.materials.len(), file.lights.len()),
+        (4, 3, 1)
+    );
+    // Everything but the mesh (which this branch cannot read) builds.
+    let mut no_mesh = file.clone();
+    no_mesh.objects.pop();
+    assert_eq!(no_mesh.build::<f32>().unwrap().summary.spheres, 2);
+}
+
+#[test]
+fn auto_precision_is_advised_on_the_files_scene() {
+    let mut file = SceneFile::load(&scene_path("four_mirrors")).unwrap();
+    file.render_mut().width = 16;
+    let advice = raytrace::scene_file::advise_precision(&file).unwrap();
+    // The spec's scene near the origin is within one 8-bit step in f64 at least.
+    assert!(advice.f64.error.within_one_step(), "{advice:?}");
+}
