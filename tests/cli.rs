@@ -53,7 +53,11 @@ fn four_tiles_in_four_processes_merge_to_the_whole_render() {
         .map(|k| {
             let tile = dir.join(format!("t{k}.rtile"));
             let tile_arg = format!("{k}/4");
-            let args = [&["render", s, "--tile", &tile_arg, "--out", tile.to_str().unwrap()], &common[..]].concat();
+            let args = [
+                &["render", s, "--tile", &tile_arg, "--out", tile.to_str().unwrap()],
+                &common[..],
+            ]
+            .concat();
             Command::new(BIN).args(&args).output().expect("a tile renders")
         })
         .collect();
@@ -77,9 +81,29 @@ fn four_tiles_in_four_processes_merge_to_the_whole_render() {
     expect(&run(&args), 1, &["tiles"]);
     // Nor do tiles of another seed.
     let other = dir.join("other.rtile");
-    let o = run(&[&["render", s, "--tile", "2/4", "--seed", "9", "--out", other.to_str().unwrap()], &common[..]].concat());
+    let o = run(&[
+        &[
+            "render",
+            s,
+            "--tile",
+            "2/4",
+            "--seed",
+            "9",
+            "--out",
+            other.to_str().unwrap(),
+        ],
+        &common[..],
+    ]
+    .concat());
     expect(&o, 0, &[]);
-    let mut args = vec!["merge", "--out", merged.to_str().unwrap(), &tiles[0], &tiles[1], &tiles[2]];
+    let mut args = vec![
+        "merge",
+        "--out",
+        merged.to_str().unwrap(),
+        &tiles[0],
+        &tiles[1],
+        &tiles[2],
+    ];
     args.push(other.to_str().unwrap());
     expect(&run(&args), 1, &["tiles"]);
     fs::remove_dir_all(dir).unwrap();
@@ -91,13 +115,29 @@ fn every_format_is_written_and_names_carry_the_settings() {
     let s = scene("four_mirrors.toml");
     for ext in ["ppm", "png", "exr", "pfm"] {
         let out = dir.join(format!("a.{ext}"));
-        let o = run(&["render", s.to_str().unwrap(), "--width", "32", "--quiet", "--out", out.to_str().unwrap()]);
+        let o = run(&[
+            "render",
+            s.to_str().unwrap(),
+            "--width",
+            "32",
+            "--quiet",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
         expect(&o, 0, &["wrote"]);
         assert!(fs::metadata(&out).unwrap().len() > 0);
     }
     // Without --out the name says what was rendered, in the current folder.
     let o = Command::new(BIN)
-        .args(["render", s.to_str().unwrap(), "--width", "32", "--spp", "2", "--quiet"])
+        .args([
+            "render",
+            s.to_str().unwrap(),
+            "--width",
+            "32",
+            "--spp",
+            "2",
+            "--quiet",
+        ])
         .current_dir(&dir)
         .output()
         .unwrap();
@@ -106,7 +146,12 @@ fn every_format_is_written_and_names_carry_the_settings() {
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
-    assert!(names.iter().any(|n| n.starts_with("four_mirrors-w32-2spp") && n.ends_with(".png")), "{names:?}");
+    assert!(
+        names
+            .iter()
+            .any(|n| n.starts_with("four_mirrors-w32-2spp") && n.ends_with(".png")),
+        "{names:?}"
+    );
     assert!(!names.iter().any(|n| n.ends_with(".tmp")), "{names:?}");
     fs::remove_dir_all(dir).unwrap();
 }
@@ -114,7 +159,11 @@ fn every_format_is_written_and_names_carry_the_settings() {
 #[test]
 fn check_and_advise_describe_the_scene() {
     let s = scene("plane_and_triangles.toml");
-    expect(&run(&["check", s.to_str().unwrap()]), 0, &["valid", "planes", "triangles", "acceleration"]);
+    expect(
+        &run(&["check", s.to_str().unwrap()]),
+        0,
+        &["valid", "planes", "triangles", "acceleration"],
+    );
     let s = scene("four_mirrors.toml");
     expect(&run(&["advise", s.to_str().unwrap()]), 0, &["advice: f32"]);
     expect(&run(&["--version"]), 0, &[env!("CARGO_PKG_VERSION")]);
@@ -136,22 +185,45 @@ fn bad_input_is_a_clear_error_with_the_right_exit_code() {
     expect(&run(&["render", missing.to_str().unwrap()]), 1, &["missing.toml"]);
     let broken = dir.join("broken.toml");
     fs::write(&broken, "[render]\nwidth = 10\nspp = [\n").unwrap();
-    expect(&run(&["check", broken.to_str().unwrap()]), 1, &["broken.toml", "line"]);
+    expect(
+        &run(&["check", broken.to_str().unwrap()]),
+        1,
+        &["broken.toml", "line"],
+    );
     let unknown = dir.join("unknown.toml");
     fs::write(&unknown, "[render]\nwidht = 10\n").unwrap();
-    expect(&run(&["check", unknown.to_str().unwrap()]), 1, &["unknown.toml", "widht"]);
+    expect(
+        &run(&["check", unknown.to_str().unwrap()]),
+        1,
+        &["unknown.toml", "widht"],
+    );
     // An unwritable output fails before the render (a folder under a regular file cannot
     // exist, for root too).
     let file = dir.join("a-file");
     fs::write(&file, "").unwrap();
     let out = file.join("x.png");
-    expect(&run(&["render", s, "--out", out.to_str().unwrap()]), 1, &["a-file"]);
+    expect(
+        &run(&["render", s, "--out", out.to_str().unwrap()]),
+        1,
+        &["a-file"],
+    );
     // An image too large for memory is refused before allocating, not aborted.
-    expect(&run(&["render", s, "--width", "1000000", "--quiet"]), 1, &["pixels"]);
+    expect(
+        &run(&["render", s, "--width", "1000000", "--quiet"]),
+        1,
+        &["pixels"],
+    );
     // A format the name contradicts is a usage error.
     let png = dir.join("x.png");
-    expect(&run(&["render", s, "--format", "exr", "--out", png.to_str().unwrap()]), 2, &["--format"]);
-    let left: Vec<_> = fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
-    assert_eq!(left.len(), 4, "only the test's own files remain: {left:?}");
+    expect(
+        &run(&["render", s, "--format", "exr", "--out", png.to_str().unwrap()]),
+        2,
+        &["--format"],
+    );
+    let left: Vec<_> = fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left.len(), 3, "only the test's own three files remain: {left:?}");
     fs::remove_dir_all(dir).unwrap();
 }

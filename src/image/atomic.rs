@@ -117,9 +117,12 @@ pub fn on_interrupt_remove_temporary_files() -> Result<()> {
 /// # Errors
 /// [`Error::Io`] naming `dir` if the folder cannot be made or written to.
 pub fn check_writable(dir: &Path) -> Result<()> {
-    let io_err = |source| Error::Io {
+    let io_err = |source: io::Error| Error::Io {
         path: dir.to_path_buf(),
-        source,
+        source: io::Error::new(
+            source.kind(),
+            format!("cannot write files into this folder: {source}"),
+        ),
     };
     fs::create_dir_all(dir).map_err(io_err)?;
     let probe = temporary_path(&dir.join("write-probe")).map_err(io_err)?;

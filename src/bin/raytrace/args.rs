@@ -150,7 +150,11 @@ fn parse_tile(s: &str) -> Result<(usize, usize), String> {
     let (k, n) = s
         .split_once('/')
         .ok_or_else(|| format!("`{s}` is not K/N (for example 2/4)"))?;
-    let number = |t: &str| t.trim().parse::<usize>().map_err(|e| format!("`{t}` in `{s}`: {e}"));
+    let number = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .map_err(|e| format!("`{t}` in `{s}`: {e}"))
+    };
     let (k, n) = (number(k)?, number(n)?);
     if n == 0 || k == 0 || k > n {
         return Err(format!("tile {k}/{n}: need 1 ≤ K ≤ N"));

@@ -1,8 +1,8 @@
 //! `raytrace check` and `raytrace advise`: what a scene file holds and what it needs.
 
-use raytrace::{Camera, Result};
 use raytrace::advice::Advice;
 use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
+use raytrace::{Camera, Result};
 use std::path::Path;
 
 /// Validates the scene (every value, every mesh) and prints what it holds.
@@ -20,12 +20,20 @@ pub fn check(path: &Path) -> Result<()> {
         println!("  skipped: {} faces without area", s.skipped_degenerate);
     }
     match &s.bounds {
-        Some(b) => println!("  bounds of the bounded objects: {:?} to {:?}", b.min, b.max),
+        Some(b) => println!(
+            "  bounds of the bounded objects: {} to {}",
+            point(b.min),
+            point(b.max)
+        ),
         None => println!("  bounds: no bounded objects"),
     }
     println!(
         "  acceleration: {}",
-        if s.uses_bvh { "BVH" } else { "a loop over the objects" }
+        if s.uses_bvh {
+            "BVH"
+        } else {
+            "a loop over the objects"
+        }
     );
     let image = (built.camera.width(), built.camera.height());
     println!(
@@ -49,6 +57,11 @@ pub fn advise(path: &Path) -> Result<()> {
     let advice = advise_precision(&file)?;
     print(path, &advice);
     Ok(())
+}
+
+/// A point as `(x, y, z)`, to four significant digits.
+fn point(p: raytrace::Vec3<f64>) -> String {
+    format!("({:.4}, {:.4}, {:.4})", p.x, p.y, p.z)
 }
 
 fn print(path: &Path, a: &Advice) {

@@ -3,8 +3,8 @@
 use crate::args::{Command, EncodingArg, Format, MAX_THREADS, MergeArgs, RenderArgs};
 use raytrace::advice::Precision;
 use raytrace::image::{
-    Encoding, TileHeader, check_writable, merge_tiles, read_tile, write_exr, write_pfm, write_png,
-    write_ppm, write_tile,
+    Encoding, TileHeader, check_writable, merge_tiles, read_tile, write_exr, write_pfm, write_png, write_ppm,
+    write_tile,
 };
 use raytrace::scene_file::{RenderOptions, SceneFile};
 use raytrace::{Error, Image, Result};
@@ -78,7 +78,11 @@ pub fn merge(args: &MergeArgs) -> Result<()> {
         encoding: encoding(args.encoding),
     };
     target.check_writable()?;
-    let tiles = args.tiles.iter().map(|p| read_tile(p)).collect::<Result<Vec<_>>>()?;
+    let tiles = args
+        .tiles
+        .iter()
+        .map(|p| read_tile(p))
+        .collect::<Result<Vec<_>>>()?;
     let image = merge_tiles(&tiles)?;
     target.write_image(&image)?;
     println!(
@@ -195,9 +199,15 @@ mod tests {
     #[test]
     fn formats_follow_the_name_unless_told() {
         let p = |s: &str| Some(PathBuf::from(s));
-        assert_eq!(choose_format(None, p("a.exr").as_deref(), Format::Png).unwrap(), Format::Exr);
+        assert_eq!(
+            choose_format(None, p("a.exr").as_deref(), Format::Png).unwrap(),
+            Format::Exr
+        );
         assert_eq!(choose_format(None, None, Format::Png).unwrap(), Format::Png);
-        assert_eq!(choose_format(Some(Format::Pfm), p("a").as_deref(), Format::Png).unwrap(), Format::Pfm);
+        assert_eq!(
+            choose_format(Some(Format::Pfm), p("a").as_deref(), Format::Png).unwrap(),
+            Format::Pfm
+        );
         assert!(choose_format(Some(Format::Pfm), p("a.png").as_deref(), Format::Png).is_err());
         assert!(choose_format(None, p("a.jpg").as_deref(), Format::Png).is_err());
         assert_eq!(folder(Path::new("x.png")), Path::new("."));
