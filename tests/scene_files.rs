@@ -2,6 +2,7 @@
 //! the code, in f32 and f64), each kind of mistake is reported where it is, and no input
 //! makes the parser panic.
 
+mod common;
 #[path = "../examples/scenes/mod.rs"]
 mod scenes;
 
@@ -342,6 +343,8 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
 }
 
 proptest! {
+    #![proptest_config(common::config(256, 0x5CE_4E, "proptest-regressions/scene_files.txt"))]
+
     #[test]
     fn any_text_is_parsed_or_refused_without_panicking(text in "\\PC{0,200}") {
         let _ = SceneFile::parse(&text, Path::new("p.toml")).map(|f| f.build::<f32>().map(|b| b.summary));

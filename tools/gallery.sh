@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Renders the README's pictures into docs/images/: every example at its default settings,
-# four_mirrors 800 pixels wide and the others 400.
+# four_mirrors 800 pixels wide and the others 400, and the dragon scene file (its mesh
+# comes from tools/fetch_meshes.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-cargo build --release --quiet --examples
+cargo build --release --quiet --examples --bin raytrace
 for spec in "four_mirrors 800" matte_spheres glass plane_and_triangles point_lights random_spheres; do
     read -r name width <<<"$spec"
     "target/release/examples/$name" --width "${width:-400}" --out "$out" >/dev/null
     cp "$out/$name.png" "docs/images/$name.png"
     echo "docs/images/$name.png"
 done
+bash tools/fetch_meshes.sh >/dev/null
+target/release/raytrace render scenes/dragon.toml --quiet --out docs/images/dragon.png

@@ -68,12 +68,10 @@ fn run(
     render: impl FnOnce(&Options) -> raytrace::Result<Render> + Send,
 ) -> raytrace::Result<()> {
     let start = Instant::now();
+    // A folder that cannot be written fails now, not after the render.
+    raytrace::image::check_writable(&opts.out)?;
     let rendered = pool(opts)?.install(|| render(opts))?;
     let samples = rendered.image.to_u16(opts.encoding);
-    std::fs::create_dir_all(&opts.out).map_err(|source| raytrace::Error::Io {
-        path: opts.out.clone(),
-        source,
-    })?;
     let ppm = opts.out.join(format!("{name}.ppm"));
     let png = opts.out.join(format!("{name}.png"));
     write_ppm(&ppm, &samples)?;
