@@ -343,7 +343,7 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
 }
 
 proptest! {
-    #![proptest_config(common::config(256, 0x5CE_4E, "proptest-regressions/scene_files.txt"))]
+    #![proptest_config(common::config(256, 0x5CE4_E000, "proptest-regressions/scene_files.txt"))]
 
     #[test]
     fn any_text_is_parsed_or_refused_without_panicking(text in "\\PC{0,200}") {
