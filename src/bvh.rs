@@ -4,24 +4,21 @@
 //! groups them into leaves; the scene owns the primitives, lays out each leaf's as it
 //! likes, and tests a whole leaf in the traversal's callback.
 
+mod build;
 mod stream;
 mod wide;
 
 pub(crate) use stream::Streams;
 
 use crate::aabb::Aabb;
-use crate::float::{Float, lit};
+use crate::float::Float;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
+use rayon::prelude::*;
 use wide::{Child, Wide};
 
 /// Most primitives a leaf may hold: one packet of spheres ([`crate::shape::Sphere4`]).
 const MAX_LEAF: usize = crate::lanes::LANES;
-/// Centroid bins per axis for the SAH sweep.
-const BINS: usize = 16;
-/// Depth from which nodes split at the median instead of by SAH, so the tree's depth,
-/// and the traversal stack, stay below `MEDIAN_DEPTH + 32` whatever the input.
-const MEDIAN_DEPTH: usize = 40;
 /// Cost of visiting a node, relative to testing one leaf. A leaf of up to four spheres
 /// is one packet test, so the SAH costs a leaf `⌈N/4⌉` and a subtree of `N` primitives
 /// `N/4` (MacDonald & Booth's linear estimate, in packets). On the random-spheres scene ½
@@ -31,7 +28,7 @@ const TRAVERSAL_COST: f64 = 0.5;
 /// One node of the flattened binary tree the build makes (32 bytes in f32). An interior
 /// node's children are the adjacent pair `nodes[offset]`, `nodes[offset + 1]`; a leaf
 /// (`count > 0`) is leaf number `offset`.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 struct Node<F> {
     /// `[min, max]` of the node's box.
     bounds: [Vec3<F>; 2],
@@ -57,53 +54,31 @@ pub struct Bvh<F> {
     wide_depth: usize,
 }
 
-struct Item<F> {
-    bounds: Aabb<F>,
-    centroid: Vec3<F>,
-    index: u32,
-}
-
 impl<F: Float> Bvh<F> {
     /// Builds the hierarchy over `bounds[i]`, the box of primitive `i`.
     ///
     /// # Panics
     /// With more than `u32::MAX` primitives.
     pub fn build(bounds: &[Aabb<F>]) -> Self {
-        let count = u32::try_from(bounds.len()).expect("a BVH holds at most u32::MAX primitives");
-        let mut items: Vec<Item<F>> = (0..count)
-            .map(|i| {
-                let b = bounds[i as usize];
-                Item {
-                    bounds: b,
-                    centroid: b.centroid(),
-                    index: i,
-                }
-            })
-            .collect();
+        u32::try_from(bounds.len()).expect("a BVH holds at most u32::MAX primitives");
+        let (nodes, indices, leaves) = build::build(bounds);
         let mut bvh = Self {
-            nodes: Vec::with_capacity(2 * bounds.len()),
-            indices: Vec::with_capacity(bounds.len()),
-            leaves: Vec::new(),
+            nodes,
+            indices,
+            leaves,
             wide: Vec::new(),
             root: None,
             orders: Vec::new(),
             wide_depth: 0,
         };
-        if !items.is_empty() {
-            bvh.nodes.push(Node {
-                bounds: Aabb::empty().corners(),
-                offset: 0,
-                count: 0,
-            });
-            bvh.build_node(0, &mut items, 0);
-            let root = bvh.nodes[0];
+        if let Some(root) = bvh.nodes.first() {
             bvh.root = Some(if root.count > 0 {
                 Child::Leaf(root.offset)
             } else {
                 Child::Node(wide::collapse(&bvh.nodes, 0, &mut bvh.wide))
             });
             bvh.wide_depth = wide::depth(&bvh.wide, bvh.root);
-            bvh.orders = bvh.wide.iter().map(Wide::orders).collect();
+            bvh.orders = bvh.wide.par_iter().map(Wide::orders).collect();
         }
         bvh
     }
@@ -111,6 +86,29 @@ impl<F: Float> Bvh<F> {
     /// Number of nodes of the binary tree (for tests and reports).
     pub fn node_count(&self) -> usize {
         self.nodes.len()
+    }
+
+    /// The tree's surface-area-heuristic cost in the build's units (for tests and
+    /// reports): `Σ C_t·A(n)/A(root)` over interior nodes plus `Σ ⌈N/4⌉·A(l)/A(root)` over
+    /// leaves, with the build's node-visit cost `C_t` = ½; 0 for an empty tree. Lower is better.
+    pub fn sah_cost(&self) -> f64 {
+        let area = |n: &Node<F>| Aabb::new(n.bounds[0], n.bounds[1]).surface_area().to_f64();
+        let Some(root) = self.nodes.first() else {
+            return 0.0;
+        };
+        let total = self
+            .nodes
+            .iter()
+            .map(|n| {
+                let weight = if n.count > 0 {
+                    (n.count as usize).div_ceil(MAX_LEAF) as f64
+                } else {
+                    TRAVERSAL_COST
+                };
+                weight * area(n)
+            })
+            .sum::<f64>();
+        total / area(root).max(f64::MIN_POSITIVE)
     }
 
     /// Number of leaves; the traversal's callbacks receive leaf numbers `0..leaf_count()`.
@@ -125,103 +123,6 @@ impl<F: Float> Bvh<F> {
     pub fn leaf(&self, k: usize) -> &[u32] {
         let (start, end) = self.leaves[k];
         &self.indices[start as usize..end as usize]
-    }
-
-    /// Fills the (already allocated) node `me` with the subtree over `items`.
-    fn build_node(&mut self, me: usize, items: &mut [Item<F>], depth: usize) {
-        let bounds = items.iter().fold(Aabb::empty(), |b, it| b.union(it.bounds));
-        self.nodes[me].bounds = bounds.corners();
-        let split = if depth < MEDIAN_DEPTH {
-            self.split(items, &bounds)
-        } else {
-            median_split(items)
-        };
-        match split {
-            Some((_axis, mid)) => {
-                let left = self.nodes.len();
-                let empty = Node {
-                    bounds: Aabb::empty().corners(),
-                    offset: 0,
-                    count: 0,
-                };
-                self.nodes.extend([empty, empty]);
-                self.nodes[me].offset = left as u32;
-                let (l, r) = items.split_at_mut(mid);
-                self.build_node(left, l, depth + 1);
-                self.build_node(left + 1, r, depth + 1);
-            }
-            None => {
-                let start = self.indices.len() as u32;
-                self.indices.extend(items.iter().map(|it| it.index));
-                self.nodes[me].offset = self.leaves.len() as u32;
-                self.nodes[me].count = items.len() as u16;
-                self.leaves.push((start, self.indices.len() as u32));
-            }
-        }
-    }
-
-    /// The SAH split `(axis, mid)` partitioning `items` in place, or `None` for a leaf.
-    ///
-    /// Centroids are binned along each of the three axes; the cheapest bin boundary wins.
-    /// Cost of a split: `C_t + (A_L·N_L + A_R·N_R)/(4A)`, of a leaf: `⌈N/4⌉` (see
-    /// [`TRAVERSAL_COST`]).
-    fn split(&self, items: &mut [Item<F>], bounds: &Aabb<F>) -> Option<(usize, usize)> {
-        let n = items.len();
-        if n <= 1 {
-            return None;
-        }
-        let cb = items.iter().fold(Aabb::empty(), |b, it| {
-            b.union(Aabb::new(it.centroid, it.centroid))
-        });
-        let area = bounds.surface_area().to_f64().max(f64::MIN_POSITIVE);
-        // (cost, axis, last bin of the left side)
-        let mut best: Option<(f64, usize, usize)> = None;
-        for axis in 0..3 {
-            let (lo, hi) = (cb.min[axis], cb.max[axis]);
-            if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
-                continue;
-            }
-            let bin_of = binner(lo, hi);
-            let mut bins = [(Aabb::empty(), 0usize); BINS];
-            for it in items.iter() {
-                let b = &mut bins[bin_of(it.centroid[axis])];
-                b.0 = b.0.union(it.bounds);
-                b.1 += 1;
-            }
-            // Sweep from the right for the right-hand areas and counts, then from the left.
-            let mut right = [(0.0f64, 0usize); BINS];
-            let (mut acc, mut cnt) = (Aabb::empty(), 0usize);
-            for i in (1..BINS).rev() {
-                acc = acc.union(bins[i].0);
-                cnt += bins[i].1;
-                right[i] = (acc.surface_area().to_f64(), cnt);
-            }
-            let (mut acc, mut cnt) = (Aabb::empty(), 0usize);
-            for i in 0..BINS - 1 {
-                acc = acc.union(bins[i].0);
-                cnt += bins[i].1;
-                let (ra, rc) = right[i + 1];
-                if cnt == 0 || rc == 0 {
-                    continue;
-                }
-                let packets = |n: usize| n.div_ceil(MAX_LEAF) as f64;
-                let cost =
-                    TRAVERSAL_COST + (acc.surface_area().to_f64() * packets(cnt) + ra * packets(rc)) / area;
-                if best.is_none_or(|(c, _, _)| cost < c) {
-                    best = Some((cost, axis, i));
-                }
-            }
-        }
-        match best {
-            // Every centroid coincides: no plane separates them.
-            None => (n > MAX_LEAF).then_some((0, n / 2)),
-            Some((cost, _, _)) if n <= MAX_LEAF && cost >= 1.0 => None,
-            Some((_, axis, last)) => {
-                let bin_of = binner(cb.min[axis], cb.max[axis]);
-                let mid = partition(items, |it| bin_of(it.centroid[axis]) <= last);
-                Some((axis, mid))
-            }
-        }
     }
 
     /// Visits the leaves whose boxes the ray meets in `(0, t_max]`, nearer subtrees first.
@@ -278,42 +179,6 @@ impl<F: Float> Bvh<F> {
         });
         found
     }
-}
-
-/// The bin of a centroid coordinate in `[lo, hi]`, `lo < hi`.
-fn binner<F: Float>(lo: F, hi: F) -> impl Fn(F) -> usize {
-    let scale = lit::<F>(BINS as f64) / (hi - lo);
-    move |c: F| ((c - lo) * scale).to_f64().clamp(0.0, (BINS - 1) as f64) as usize
-}
-
-/// Splits at the median centroid along the longest axis (a leaf for `MAX_LEAF` or fewer).
-fn median_split<F: Float>(items: &mut [Item<F>]) -> Option<(usize, usize)> {
-    if items.len() <= MAX_LEAF {
-        return None;
-    }
-    let cb = items.iter().fold(Aabb::empty(), |b, it| {
-        b.union(Aabb::new(it.centroid, it.centroid))
-    });
-    let axis = cb.longest_axis();
-    let mid = items.len() / 2;
-    items.select_nth_unstable_by(mid, |a, b| {
-        a.centroid[axis]
-            .partial_cmp(&b.centroid[axis])
-            .unwrap_or(std::cmp::Ordering::Equal)
-    });
-    Some((axis, mid))
-}
-
-/// Moves the items satisfying `left` to the front; returns how many there are.
-fn partition<T>(items: &mut [T], left: impl Fn(&T) -> bool) -> usize {
-    let mut mid = 0;
-    for i in 0..items.len() {
-        if left(&items[i]) {
-            items.swap(i, mid);
-            mid += 1;
-        }
-    }
-    mid
 }
 
 #[cfg(test)]
@@ -403,6 +268,41 @@ mod tests {
                     assert_eq!(got, want, "{ray:?}");
                 }
             }
+        }
+    }
+
+    /// Random boxes: `n` little ones in a cube of side 100.
+    fn random_boxes(n: usize, seed: u64) -> Vec<Aabb<f32>> {
+        let mut rng = rand::rngs::Xoshiro256PlusPlus::seed_from_u64(seed);
+        (0..n)
+            .map(|_| {
+                let c = Vec3::new(
+                    rng.random_range(-50.0..50.0),
+                    rng.random_range(-50.0..50.0),
+                    rng.random_range(-50.0..50.0),
+                );
+                Aabb::new(c, c + Vec3::splat(rng.random_range(0.1..2.0)))
+            })
+            .collect()
+    }
+
+    /// Pools of one, two and three threads build the same tree, bit for bit (the node
+    /// arrays, leaves, primitive order and the wide tree). 100 000 boxes, so the top
+    /// nodes bin in chunks and the subtrees are built as separate tasks.
+    #[test]
+    fn same_tree_on_any_number_of_threads() {
+        let boxes = random_boxes(100_000, 7);
+        let on = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build();
+            pool.expect("a thread pool").install(|| Bvh::build(&boxes))
+        };
+        let one = on(1);
+        for threads in [2, 3] {
+            let other = on(threads);
+            assert!(one.nodes == other.nodes, "nodes on {threads} threads");
+            assert_eq!(one.leaves, other.leaves, "leaves on {threads} threads");
+            assert_eq!(one.indices, other.indices, "primitives on {threads} threads");
+            assert_eq!(format!("{one:?}"), format!("{other:?}"), "{threads} threads");
         }
     }
 

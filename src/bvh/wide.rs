@@ -83,20 +83,24 @@ pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wid
         let l = nodes[i].offset as usize;
         [l, l + 1]
     };
-    let mut lanes: Vec<usize> = children(at).to_vec();
-    while lanes.len() < 4 {
+    let (mut lanes, mut len) = ([0usize; 4], 2);
+    lanes[..2].copy_from_slice(&children(at));
+    while len < 4 {
         let area = |i: usize| {
             let [lo, hi] = nodes[i].bounds;
             let d = hi - lo;
             (d.x * d.y + d.y * d.z + d.z * d.x).to_f64()
         };
-        let open = lanes
+        let open = lanes[..len]
             .iter()
             .enumerate()
             .filter(|&(_, &i)| nodes[i].count == 0)
             .max_by(|a, b| area(*a.1).total_cmp(&area(*b.1)));
         let Some((k, &i)) = open else { break };
-        lanes.splice(k..=k, children(i));
+        // Lane `k` gives way to the two children, the lanes after it move up one.
+        lanes.copy_within(k + 1..len, k + 2);
+        lanes[k..k + 2].copy_from_slice(&children(i));
+        len += 1;
     }
     let me = out.len();
     let empty = Wide {
@@ -105,7 +109,7 @@ pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wid
     };
     out.push(empty);
     let mut node = empty;
-    for (lane, &i) in lanes.iter().enumerate() {
+    for (lane, &i) in lanes[..len].iter().enumerate() {
         let [lo, hi] = nodes[i].bounds;
         for axis in 0..3 {
             node.sides[0][axis].0[lane] = lo[axis];

@@ -1,0 +1,402 @@
+//! The binned-SAH build of the binary tree, parallel and deterministic: every decision
+//! depends on the input alone (never on the number of threads or on scheduling), so any
+//! pool gives the same node arrays, bit for bit.
+//!
+//! Large nodes bin their primitives in fixed-size chunks, each chunk on any thread, and
+//! merge the chunks' bins left to right; large subtrees are built on both sides of a
+//! `rayon::join`, each into its own arrays, which are concatenated afterwards in the
+//! order the sequential build writes them.
+
+use super::{MAX_LEAF, Node, TRAVERSAL_COST};
+use crate::aabb::Aabb;
+use crate::float::{Float, lit};
+use crate::vec3::Vec3;
+use rayon::prelude::*;
+
+/// Centroid bins per axis for the SAH sweep.
+const BINS: usize = 16;
+/// Depth from which nodes split at the median instead of by SAH, so the tree's depth,
+/// and the traversal stack, stay below `MEDIAN_DEPTH + 32` whatever the input.
+const MEDIAN_DEPTH: usize = 40;
+/// Primitives from which a subtree's two halves are built as separate tasks; smaller
+/// subtrees are built in one go into one set of arrays.
+const TASK: usize = 4096;
+/// Primitives from which a node bins in chunks of `CHUNK`, the chunks as separate tasks.
+const PAR_BIN: usize = 1 << 15;
+/// Primitives per binning chunk of a large node.
+const CHUNK: usize = 1 << 13;
+
+/// A binary tree's `(nodes, indices, leaves)` as [`super::Bvh`] stores them.
+pub(super) type Arrays<F> = (Vec<Node<F>>, Vec<u32>, Vec<(u32, u32)>);
+
+/// The binary tree over primitives `0..bounds.len()` (empty for none).
+pub(super) fn build<F: Float>(bounds: &[Aabb<F>]) -> Arrays<F> {
+    let mut items: Vec<Item<F>> = bounds
+        .par_iter()
+        .enumerate()
+        .map(|(i, &b)| Item {
+            bounds: b,
+            centroid: b.centroid(),
+            index: i as u32,
+        })
+        .collect();
+    if items.is_empty() {
+        return (Vec::new(), Vec::new(), Vec::new());
+    }
+    let span = fold(&items);
+    let tree = subtree(&mut items, 0, span, 0);
+    let mut nodes = Vec::with_capacity(2 * items.len());
+    let mut leaves = Vec::with_capacity(items.len());
+    nodes.push(empty_node());
+    tree.flatten(0, &mut nodes, &mut leaves);
+    // The partitions left the primitives in leaf order.
+    let indices = items.par_iter().map(|it| it.index).collect();
+    (nodes, indices, leaves)
+}
+
+/// What the build reads of a primitive, copied once into one compact array.
+struct Item<F> {
+    bounds: Aabb<F>,
+    centroid: Vec3<F>,
+    index: u32,
+}
+
+/// A node's box and the box of its primitives' centroids, handed down by the parent's
+/// split so that no node folds over its primitives again.
+#[derive(Clone, Copy)]
+struct Span<F> {
+    bounds: Aabb<F>,
+    centroids: Aabb<F>,
+}
+
+/// The span of `items` (only where a node's span was not handed down: the root, median
+/// splits).
+fn fold<F: Float>(items: &[Item<F>]) -> Span<F> {
+    items.iter().fold(Span::empty(), |s, it| s.add(it))
+}
+
+impl<F: Float> Span<F> {
+    fn empty() -> Self {
+        Self {
+            bounds: Aabb::empty(),
+            centroids: Aabb::empty(),
+        }
+    }
+
+    fn add(self, it: &Item<F>) -> Self {
+        Self {
+            bounds: union(self.bounds, it.bounds),
+            centroids: grow(self.centroids, it.centroid),
+        }
+    }
+}
+
+/// `b` grown to hold the point `p`.
+#[inline(always)]
+fn grow<F: Float>(b: Aabb<F>, p: Vec3<F>) -> Aabb<F> {
+    union(b, Aabb { min: p, max: p })
+}
+
+/// [`Aabb::union`] by plain comparisons, one instruction each where `f32::min`'s NaN rule
+/// takes three; as there, a NaN in `b` is ignored.
+#[inline(always)]
+fn union<F: Float>(a: Aabb<F>, b: Aabb<F>) -> Aabb<F> {
+    let lo = |a: F, b: F| if b < a { b } else { a };
+    let hi = |a: F, b: F| if b > a { b } else { a };
+    Aabb {
+        min: Vec3::new(lo(a.min.x, b.min.x), lo(a.min.y, b.min.y), lo(a.min.z, b.min.z)),
+        max: Vec3::new(hi(a.max.x, b.max.x), hi(a.max.y, b.max.y), hi(a.max.z, b.max.z)),
+    }
+}
+
+/// The nodes and leaves of a subtree laid out as the sequential build lays out a whole
+/// tree (its root first, then its root's descendants), with offsets local to it; leaf
+/// ranges index the whole array of primitives.
+struct Part<F> {
+    nodes: Vec<Node<F>>,
+    leaves: Vec<(u32, u32)>,
+}
+
+/// A subtree built in parallel: one part, or a split whose halves were built apart.
+enum Subtree<F> {
+    Part(Part<F>),
+    Split {
+        bounds: Aabb<F>,
+        halves: Box<(Subtree<F>, Subtree<F>)>,
+    },
+}
+
+/// Builds the subtree over `items`, which sit at `first` in the whole array.
+fn subtree<F: Float>(items: &mut [Item<F>], first: usize, span: Span<F>, depth: usize) -> Subtree<F> {
+    if items.len() < TASK {
+        let mut part = Part {
+            nodes: vec![empty_node()],
+            leaves: Vec::new(),
+        };
+        part.grow(0, items, first, span, depth);
+        return Subtree::Part(part);
+    }
+    let (mid, left, right) =
+        split(items, &span, depth).expect("a node of more than MAX_LEAF primitives splits");
+    let (l, r) = items.split_at_mut(mid);
+    let halves = rayon::join(
+        || subtree(l, first, left, depth + 1),
+        || subtree(r, first + mid, right, depth + 1),
+    );
+    Subtree::Split {
+        bounds: span.bounds,
+        halves: Box::new(halves),
+    }
+}
+
+fn empty_node<F: Float>() -> Node<F> {
+    Node {
+        bounds: Aabb::empty().corners(),
+        offset: 0,
+        count: 0,
+    }
+}
+
+impl<F: Float> Part<F> {
+    /// Fills the (already allocated) node `me` with the subtree over `items`.
+    fn grow(&mut self, me: usize, items: &mut [Item<F>], first: usize, span: Span<F>, depth: usize) {
+        self.nodes[me].bounds = span.bounds.corners();
+        match split(items, &span, depth) {
+            Some((mid, left, right)) => {
+                let at = self.nodes.len();
+                self.nodes.extend([empty_node(), empty_node()]);
+                self.nodes[me].offset = at as u32;
+                let (l, r) = items.split_at_mut(mid);
+                self.grow(at, l, first, left, depth + 1);
+                self.grow(at + 1, r, first + mid, right, depth + 1);
+            }
+            None => {
+                self.nodes[me].offset = self.leaves.len() as u32;
+                self.nodes[me].count = items.len() as u16;
+                self.leaves.push((first as u32, (first + items.len()) as u32));
+            }
+        }
+    }
+}
+
+impl<F: Float> Subtree<F> {
+    /// Writes this subtree's root into the allocated `nodes[at]` and appends its
+    /// descendants and leaves, in the order the sequential build writes them.
+    fn flatten(self, at: usize, nodes: &mut Vec<Node<F>>, leaves: &mut Vec<(u32, u32)>) {
+        match self {
+            Subtree::Part(part) => {
+                // Local node `j ≥ 1` lands at `nodes.len() + j - 1`, local leaf `k` at
+                // `leaves.len() + k`.
+                let (shift, leaf_base) = (nodes.len() as u32 - 1, leaves.len() as u32);
+                let place = |n: &Node<F>| Node {
+                    offset: n.offset + if n.count > 0 { leaf_base } else { shift },
+                    ..*n
+                };
+                let mut placed = part.nodes.iter().map(place);
+                nodes[at] = placed.next().expect("a part holds its root");
+                nodes.extend(placed);
+                leaves.extend(part.leaves);
+            }
+            Subtree::Split { bounds, halves } => {
+                let children = nodes.len();
+                nodes[at] = Node {
+                    bounds: bounds.corners(),
+                    offset: children as u32,
+                    count: 0,
+                };
+                nodes.extend([empty_node(), empty_node()]);
+                let (l, r) = *halves;
+                l.flatten(children, nodes, leaves);
+                r.flatten(children + 1, nodes, leaves);
+            }
+        }
+    }
+}
+
+/// One bin of the SAH sweep: the union of its primitives' boxes and their number.
+#[derive(Clone, Copy)]
+struct Bin<F> {
+    bounds: Aabb<F>,
+    count: u32,
+}
+
+/// Maps a centroid coordinate in `[lo, hi]` to its bin; all to bin 0 if `lo = hi` (or
+/// either is not finite), which leaves that axis no split.
+#[derive(Clone, Copy)]
+struct Binner<F> {
+    lo: F,
+    scale: F,
+}
+
+impl<F: Float> Binner<F> {
+    fn new(lo: F, hi: F) -> Self {
+        let scale = if hi > lo {
+            lit::<F>(BINS as f64) / (hi - lo)
+        } else {
+            F::zero()
+        };
+        Self { lo, scale }
+    }
+
+    /// `⌊(c − lo)·scale⌋` clamped to the bins (a NaN to bin 0).
+    #[inline(always)]
+    fn bin(&self, c: F) -> usize {
+        let x = (c - self.lo) * self.scale;
+        let x = if x > F::zero() { x } else { F::zero() };
+        (x.to_f64() as usize).min(BINS - 1)
+    }
+}
+
+/// The bins of `items` along the three axes, in one pass.
+fn bin<F: Float>(items: &[Item<F>], binners: &[Binner<F>; 3]) -> [[Bin<F>; BINS]; 3] {
+    let mut bins = [[Bin {
+        bounds: Aabb::empty(),
+        count: 0,
+    }; BINS]; 3];
+    for it in items {
+        for (axis, bins) in bins.iter_mut().enumerate() {
+            let b = &mut bins[binners[axis].bin(it.centroid[axis])];
+            b.bounds = union(b.bounds, it.bounds);
+            b.count += 1;
+        }
+    }
+    bins
+}
+
+/// [`bin`] over a large node, in chunks on any threads, the chunks' bins merged left to
+/// right so that the merge's order does not depend on the scheduling.
+fn bin_in_chunks<F: Float>(items: &[Item<F>], binners: &[Binner<F>; 3]) -> [[Bin<F>; BINS]; 3] {
+    let chunks: Vec<_> = items.par_chunks(CHUNK).map(|c| bin(c, binners)).collect();
+    let mut all = chunks[0];
+    for c in &chunks[1..] {
+        for (mine, theirs) in all.iter_mut().zip(c) {
+            for (a, b) in mine.iter_mut().zip(theirs) {
+                a.bounds = union(a.bounds, b.bounds);
+                a.count += b.count;
+            }
+        }
+    }
+    all
+}
+
+/// The cheapest split found by the sweep.
+struct Best<F> {
+    cost: f64,
+    axis: usize,
+    /// Last bin of the left side.
+    last: usize,
+    left: Aabb<F>,
+    right: Aabb<F>,
+}
+
+/// The split of `items` (with span `span`, at depth `depth`): partitions `items` in place
+/// and returns where the right half starts and the halves' spans, or `None` for a leaf.
+///
+/// By SAH above [`MEDIAN_DEPTH`]: centroids are binned along each of the three axes and
+/// the cheapest bin boundary wins. Cost of a split: `C_t + (A_L·⌈N_L/4⌉ + A_R·⌈N_R/4⌉)/A`,
+/// of a leaf: `⌈N/4⌉` (see [`TRAVERSAL_COST`]).
+fn split<F: Float>(items: &mut [Item<F>], span: &Span<F>, depth: usize) -> Option<(usize, Span<F>, Span<F>)> {
+    let n = items.len();
+    if n <= 1 {
+        return None;
+    }
+    if depth >= MEDIAN_DEPTH {
+        return median_split(items);
+    }
+    let cb = &span.centroids;
+    let binners = [0, 1, 2].map(|axis| Binner::new(cb.min[axis], cb.max[axis]));
+    let bins = if n >= PAR_BIN {
+        bin_in_chunks(items, &binners)
+    } else {
+        bin(items, &binners)
+    };
+    let area = span.bounds.surface_area().to_f64().max(f64::MIN_POSITIVE);
+    let mut best: Option<Best<F>> = None;
+    for (axis, bins) in bins.iter().enumerate() {
+        sweep(axis, bins, area, &mut best);
+    }
+    match best {
+        // Every centroid coincides: no plane separates them.
+        None if n > MAX_LEAF => {
+            let mid = n / 2;
+            Some((mid, fold(&items[..mid]), fold(&items[mid..])))
+        }
+        None => None,
+        Some(b) if n <= MAX_LEAF && b.cost >= 1.0 => None,
+        Some(b) => {
+            let binner = binners[b.axis];
+            let (mut mid, mut lc, mut rc) = (0, Aabb::empty(), Aabb::empty());
+            for i in 0..n {
+                let c = items[i].centroid;
+                if binner.bin(c[b.axis]) <= b.last {
+                    lc = grow(lc, c);
+                    items.swap(i, mid);
+                    mid += 1;
+                } else {
+                    rc = grow(rc, c);
+                }
+            }
+            let half = |bounds, centroids| Span { bounds, centroids };
+            Some((mid, half(b.left, lc), half(b.right, rc)))
+        }
+    }
+}
+
+/// Updates `best` with the cheapest boundary between the bins of `axis`.
+///
+/// Only the non-empty bins are swept: a boundary after an empty bin costs what the one
+/// before it costs, and the earlier boundary wins a tie, so skipping it changes nothing.
+fn sweep<F: Float>(axis: usize, bins: &[Bin<F>; BINS], area: f64, best: &mut Option<Best<F>>) {
+    let mut full = [(0usize, bins[0]); BINS];
+    let mut k = 0;
+    for (i, b) in bins.iter().enumerate() {
+        if b.count > 0 {
+            full[k] = (i, *b);
+            k += 1;
+        }
+    }
+    if k < 2 {
+        return;
+    }
+    // From the right for the right-hand boxes and counts, then from the left.
+    let mut right = [(Aabb::empty(), 0u32); BINS];
+    let (mut acc, mut cnt) = (Aabb::empty(), 0u32);
+    for j in (1..k).rev() {
+        acc = union(acc, full[j].1.bounds);
+        cnt += full[j].1.count;
+        right[j] = (acc, cnt);
+    }
+    let packets = |n: u32| n.div_ceil(MAX_LEAF as u32) as f64;
+    let (mut acc, mut cnt) = (Aabb::empty(), 0u32);
+    for j in 0..k - 1 {
+        acc = union(acc, full[j].1.bounds);
+        cnt += full[j].1.count;
+        let (rb, rc) = right[j + 1];
+        let cost = TRAVERSAL_COST
+            + (acc.surface_area().to_f64() * packets(cnt) + rb.surface_area().to_f64() * packets(rc)) / area;
+        if best.as_ref().is_none_or(|b| cost < b.cost) {
+            *best = Some(Best {
+                cost,
+                axis,
+                last: full[j].0,
+                left: acc,
+                right: rb,
+            });
+        }
+    }
+}
+
+/// Splits at the median centroid along the longest axis (a leaf for `MAX_LEAF` or fewer).
+fn median_split<F: Float>(items: &mut [Item<F>]) -> Option<(usize, Span<F>, Span<F>)> {
+    if items.len() <= MAX_LEAF {
+        return None;
+    }
+    let axis = fold(items).centroids.longest_axis();
+    let mid = items.len() / 2;
+    items.select_nth_unstable_by(mid, |a, b| {
+        a.centroid[axis]
+            .partial_cmp(&b.centroid[axis])
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    Some((mid, fold(&items[..mid]), fold(&items[mid..])))
+}
