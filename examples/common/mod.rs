@@ -3,11 +3,11 @@
 
 #![allow(dead_code)]
 
+mod files;
 mod options;
 
 pub use options::{Example, Options};
 use raytrace::advice::Precision;
-use raytrace::image::{write_png, write_ppm};
 use raytrace::{EnumScene, Render, ScreenCamera, render};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -74,11 +74,7 @@ fn run(
     let samples = rendered.image.to_u16(opts.encoding);
     let ppm = opts.out.join(format!("{name}.ppm"));
     let png = opts.out.join(format!("{name}.png"));
-    write_ppm(&ppm, &samples)?;
-    if let Err(e) = write_png(&png, &samples, opts.encoding) {
-        eprintln!("note: {} was written; {} was not", ppm.display(), png.display());
-        return Err(e);
-    }
+    files::write_both(&ppm, &png, &samples, opts.encoding)?;
     println!(
         "{name}: {}×{} pixels, {} spp, max depth {}, {}, seed {}",
         samples.width, samples.height, opts.spp, opts.max_depth, opts.precision, opts.seed

@@ -82,6 +82,12 @@ fn override_settings(file: &mut SceneFile, args: &RenderArgs) -> Result<()> {
 /// image's size.
 fn render_in<F: Float>(file: &SceneFile, args: &RenderArgs) -> Result<(Render, (usize, usize))> {
     let built = file.build::<F>()?;
+    if built.summary.skipped_degenerate > 0 {
+        eprintln!(
+            "note: skipped {} mesh faces without area",
+            built.summary.skipped_degenerate
+        );
+    }
     let (width, height) = (built.camera.width(), built.camera.height());
     let tile = tile_rect(args, width, height)?;
     check_memory(tile.width, tile.height)?;
