@@ -378,10 +378,15 @@ fn the_format_documents_example_parses() {
         (file.objects.len(), file.materials.len(), file.lights.len()),
         (4, 3, 1)
     );
-    // Everything but the mesh (which this branch cannot read) builds.
-    let mut no_mesh = file.clone();
-    no_mesh.objects.pop();
-    assert_eq!(no_mesh.build::<f32>().unwrap().summary.spheres, 2);
+    // It builds with a mesh in place of the bunny (fetched, not committed): the committed
+    // tetrahedron, beside a file in tests/data/.
+    let example = example.replace("meshes/bunny.obj", "meshes/tetrahedron.obj");
+    let file = SceneFile::parse(&example, Path::new("tests/data/example.toml")).unwrap();
+    let summary = file.build::<f32>().unwrap().summary;
+    assert_eq!(
+        (summary.spheres, summary.planes, summary.meshes, summary.triangles),
+        (2, 1, 1, 4)
+    );
 }
 
 #[test]

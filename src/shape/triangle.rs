@@ -118,8 +118,10 @@ impl<F: Float> Triangle<F> {
     /// mesh's interior. pbrt also recomputes the edge functions in `f64` when one of
     /// them is exactly zero in `f32` (products of `f32` are exact in `f64`, so the signs
     /// become exact and an edge is hit by fewer duplicates); we do the same for every
-    /// scalar with at most 26 significant bits (`f32`). For `f64` and double-double
-    /// there is no wider type to fall back to, and none is needed for watertightness.
+    /// scalar with at most 26 significant bits (`f32`). For `f64` there is no wider type
+    /// to fall back to, and none is needed for watertightness. Double-double arithmetic is
+    /// not correctly rounded, so this argument does not cover it: a double-double render
+    /// of a mesh was seen to miss it at a few pixels where `f64` hits.
     pub fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<(F, [F; 3])> {
         // 1. Translate to the ray origin and permute: kz = the axis of the largest |Dᵢ|.
         let o = ray.origin;
