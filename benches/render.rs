@@ -10,7 +10,6 @@ use raytrace::prelude::*;
 use raytrace::render::Tracer;
 use raytrace::{Acceleration, DefaultRng};
 use std::hint::black_box;
-use std::sync::Arc;
 
 /// One thread, so the numbers compare code, not scheduling.
 fn single<T: Send>(f: impl FnOnce() -> T + Send) -> T {
@@ -59,25 +58,6 @@ fn one_path<F: Float>(c: &mut Criterion) {
     g.finish();
 }
 
-/// The same scene as trait objects: `Box<dyn Hittable>` and `Arc<dyn Material>`.
-fn as_dyn<F: Float>(scene: &EnumScene<F>) -> DynScene<F, DefaultRng> {
-    let mut d = DynScene::new(*scene.background());
-    for o in scene.objects() {
-        let shape: Box<dyn Hittable<F> + Send + Sync> = match o.shape {
-            ShapeKind::Sphere(s) => Box::new(s),
-            ShapeKind::Plane(p) => Box::new(p),
-            ShapeKind::Triangle(t) => Box::new(t),
-        };
-        let material: Arc<dyn Material<F, DefaultRng> + Send + Sync> = match o.material {
-            MaterialKind::Mirror(m) => Arc::new(m),
-            MaterialKind::Lambertian(m) => Arc::new(m),
-            MaterialKind::Dielectric(m) => Arc::new(m),
-        };
-        d.add(shape, material);
-    }
-    d
-}
-
 /// The same scenes through both dispatch paths, one thread: the enum fast path against
 /// boxed trait objects (the spec's vector of smart pointers).
 fn dispatch<F: Float>(c: &mut Criterion) {
@@ -86,7 +66,7 @@ fn dispatch<F: Float>(c: &mut Criterion) {
     let s4 = RenderSettings::new(4, 10, 0).unwrap();
     let spec = ScreenCamera::new(160, 80).unwrap();
     let matte = scenes::matte_spheres::<F>().unwrap();
-    let matte_dyn = as_dyn(&matte);
+    let matte_dyn: DynScene<F, DefaultRng> = matte.to_dyn();
     g.bench_function(
         BenchmarkId::new(format!("{}/enum", F::NAME), "matte_spheres-160x80-4spp"),
         |b| b.iter(|| single(|| render(&matte, &spec, &s4).unwrap().stats.rays)),
@@ -97,7 +77,7 @@ fn dispatch<F: Float>(c: &mut Criterion) {
     );
     let look = scenes::random_spheres_camera::<F>(160).unwrap();
     let random = scenes::random_spheres::<F>(0).unwrap();
-    let random_dyn = as_dyn(&random);
+    let random_dyn: DynScene<F, DefaultRng> = random.to_dyn();
     let s2 = RenderSettings::new(2, 50, 0).unwrap();
     g.bench_function(
         BenchmarkId::new(format!("{}/enum", F::NAME), "random_spheres-160x90-2spp"),

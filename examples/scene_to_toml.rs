@@ -93,8 +93,9 @@ fn examples() -> raytrace::Result<Vec<Example>> {
 }
 
 /// The scene file describing `e`; materials are named by kind and numbered, one entry
-/// per distinct material.
-fn to_file(e: &Example) -> SceneFile {
+/// per distinct material. A mesh is an error: its triangles come from a file this
+/// program has no name for.
+fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
     let mut file = SceneFile::default();
     *file.render_mut() = RenderOptions {
         width: e.width,
@@ -122,7 +123,7 @@ fn to_file(e: &Example) -> SceneFile {
                 name
             }
         };
-        file.objects.push(match o.shape {
+        file.objects.push(match &o.shape {
             ShapeKind::Sphere(s) => ObjectSpec::Sphere {
                 center: s.center().to_f64(),
                 radius: s.radius(),
@@ -137,6 +138,10 @@ fn to_file(e: &Example) -> SceneFile {
                 let [a, b, c] = t.vertices().map(|v| v.to_f64());
                 ObjectSpec::Triangle { a, b, c, material }
             }
+            ShapeKind::Mesh(_) => {
+                let why = format!("{}: a mesh cannot be written without its file", e.name);
+                return Err(raytrace::Error::InvalidSettings(why));
+            }
         });
     }
     for l in e.scene.lights() {
@@ -145,7 +150,7 @@ fn to_file(e: &Example) -> SceneFile {
             intensity: l.intensity().to_f64(),
         });
     }
-    file
+    Ok(file)
 }
 
 fn material(m: &MaterialKind<f64>) -> (&'static str, MaterialSpec) {
@@ -189,7 +194,7 @@ fn run() -> raytrace::Result<()> {
         let text = format!(
             "# {}\n# Written by `cargo run --example scene_to_toml` from examples/scenes/mod.rs.\n\n{}",
             e.about,
-            to_file(&e).to_toml()
+            to_file(&e)?.to_toml()
         );
         std::fs::write(&path, text).map_err(|source| raytrace::Error::Io {
             path: path.clone(),

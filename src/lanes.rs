@@ -39,6 +39,25 @@ impl<F: Float> F4<F> {
         Self([v; LANES])
     }
 
+    /// `|x|` per lane.
+    #[inline(always)]
+    pub fn abs(self) -> Self {
+        self.map(F::abs)
+    }
+
+    /// [`Float::max`] per lane (for a NaN lane, the other operand).
+    #[inline(always)]
+    pub fn max(self, o: Self) -> Self {
+        self.zip(o, F::max)
+    }
+
+    /// Per lane: `if mask(k) { x } else { y }`.
+    #[inline(always)]
+    pub fn select(mask: impl Fn(usize) -> bool, x: Self, y: Self) -> Self {
+        let sel = |k: usize| if mask(k) { x.0[k] } else { y.0[k] };
+        Self([sel(0), sel(1), sel(2), sel(3)])
+    }
+
     /// `√x` per lane (NaN for a negative lane).
     #[inline(always)]
     pub fn sqrt(self) -> Self {
@@ -75,6 +94,12 @@ impl<F: Float> F4<F> {
     #[inline(always)]
     pub fn all(test: impl Fn(usize) -> bool) -> bool {
         test(0) & test(1) & test(2) & test(3)
+    }
+
+    /// Whether `test(k)` holds in some lane (see [`F4::all`] for the form).
+    #[inline(always)]
+    pub fn any(test: impl Fn(usize) -> bool) -> bool {
+        test(0) | test(1) | test(2) | test(3)
     }
 
     /// Whether some lane is `< bound` (see [`F4::all`] for the form).

@@ -64,8 +64,8 @@ pub use material::{Dielectric, Lambertian, Material, MaterialKind, Mirror, Scatt
 pub use ray::Ray;
 pub use render::{Rect, Render, RenderSettings, RenderStats, Renderer, render, render_reference};
 pub use sampling::DefaultRng;
-pub use scene::{Acceleration, DynScene, EnumScene, Object, Scene};
-pub use shape::{Hit, Hittable, Plane, ShapeKind, Sphere, Triangle};
+pub use scene::{Acceleration, DynScene, EnumScene, Layout, Object, Scene};
+pub use shape::{Hit, Hittable, Intersection, Mesh, Plane, ShapeKind, Sphere, Triangle};
 pub use vec3::{Color, Vec3};
 
 /// The random generators' crate, re-exported so a user's generator and `Rng` bounds name
@@ -77,7 +77,7 @@ pub mod prelude {
     pub use crate::image::{read_ppm, write_png, write_ppm};
     pub use crate::{
         Background, Camera, Color, Dielectric, DynScene, Encoding, EnumScene, Error, Float, Hittable,
-        Lambertian, LookAtCamera, Material, MaterialKind, Mirror, Plane, PointLight, Ray, Rect,
+        Lambertian, Layout, LookAtCamera, Material, MaterialKind, Mesh, Mirror, Plane, PointLight, Ray, Rect,
         RenderSettings, Renderer, Scene, ScreenCamera, ShapeKind, Sphere, Triangle, Vec3, lit, render,
     };
 }

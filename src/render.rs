@@ -22,8 +22,8 @@ use crate::float::Float;
 use crate::image::Image;
 use crate::material::Material;
 use crate::sampling::DefaultRng;
+use crate::scene::Layout;
 use crate::scene::Scene;
-use crate::shape::Hittable;
 use batch::Batch;
 use progress::Progress;
 use rand::{Rng, SeedableRng};
@@ -84,7 +84,7 @@ impl fmt::Display for RenderStats {
 pub fn render<F, S, M, C>(scene: &Scene<F, S, M>, camera: &C, settings: &RenderSettings) -> Result<Render>
 where
     F: Float,
-    S: Hittable<F> + Sync,
+    S: Layout<F> + Sync,
     M: Material<F, DefaultRng> + Sync,
     C: Camera<F> + Sync,
 {
@@ -184,7 +184,7 @@ impl<'a, F: Float, S, M, C: Camera<F>, R> Renderer<'a, F, S, M, C, R> {
 impl<F, S, M, C, R> Renderer<'_, F, S, M, C, R>
 where
     F: Float,
-    S: Hittable<F> + Sync,
+    S: Layout<F> + Sync,
     M: Material<F, R> + Sync,
     C: Camera<F> + Sync,
     R: Rng + SeedableRng,

@@ -1,6 +1,7 @@
 //! A scene: objects (a shape with its material), point lights and a background.
 
 mod index;
+mod layout;
 
 use crate::background::Background;
 use crate::float::Float;
@@ -10,6 +11,7 @@ use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, ShapeKind};
 use index::Index;
 pub(crate) use index::Nearests;
+pub use layout::{Layout, Primitive};
 use rand::Rng;
 use std::marker::PhantomData;
 use std::sync::{Arc, OnceLock};
@@ -28,12 +30,13 @@ pub struct Object<S, M> {
 /// [`EnumScene`] (compile-time `match`) and [`DynScene`] (trait objects, the spec's
 /// "vector of smart pointers").
 ///
-/// Intersection is a plain loop over the objects until there are enough of them for a
-/// bounding volume hierarchy to pay ([`Acceleration::Auto`]); the hierarchy holds only
-/// the shapes with [`bounds`](Hittable::bounds) (planes and unbounded shapes stay in the
-/// loop). Either way, the shapes that are spheres ([`Hittable::as_sphere`]: the enum fast
-/// path's spheres, not trait objects) are tested four at a time and only the nearest hit's
-/// record is made. The structure is built on the first query after a change.
+/// Intersection is a plain loop over the shapes' parts (a mesh's triangles) until there
+/// are enough of them for a bounding volume hierarchy to pay ([`Acceleration::Auto`]); the
+/// hierarchy holds only the parts with [bounds](Hittable::part_bounds) (planes and
+/// unbounded shapes stay in the loop). Either way, the parts its shape type's [`Layout`]
+/// calls spheres and triangles (the enum fast path's, not trait objects) are tested four
+/// at a time, and only the nearest hit's record is made. The structure is built on the
+/// first query after a change.
 #[derive(Clone, Debug)]
 pub struct Scene<F, S, M> {
     objects: Vec<Object<S, M>>,
@@ -47,17 +50,17 @@ pub struct Scene<F, S, M> {
 /// Whether a scene intersects through a BVH.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Acceleration {
-    /// A BVH once the scene has at least [`Acceleration::AUTO_THRESHOLD`] bounded objects.
+    /// A BVH once the scene has at least [`Acceleration::AUTO_THRESHOLD`] bounded parts.
     #[default]
     Auto,
     /// Always the plain loop (spheres still four at a time).
     Linear,
-    /// Always a BVH over the bounded objects.
+    /// Always a BVH over the bounded parts.
     Bvh,
 }
 
 impl Acceleration {
-    /// The bounded-object count from which [`Acceleration::Auto`] builds a BVH.
+    /// The bounded-part count from which [`Acceleration::Auto`] builds a BVH.
     ///
     /// Chosen by the `render` bench's `bvh-threshold-160x80-2spp` group: the plain loop
     /// is faster up to 12 random small spheres, the BVH from 16; on the spec's scenes
@@ -82,10 +85,11 @@ impl<F: Float> EnumScene<F> {
         let mut scene = DynScene::new(self.background);
         scene.set_acceleration(self.acceleration);
         for o in &self.objects {
-            let shape: Box<dyn Hittable<F> + Send + Sync> = match o.shape {
-                ShapeKind::Sphere(s) => Box::new(s),
-                ShapeKind::Plane(p) => Box::new(p),
-                ShapeKind::Triangle(t) => Box::new(t),
+            let shape: Box<dyn Hittable<F> + Send + Sync> = match &o.shape {
+                ShapeKind::Sphere(s) => Box::new(*s),
+                ShapeKind::Plane(p) => Box::new(*p),
+                ShapeKind::Triangle(t) => Box::new(*t),
+                ShapeKind::Mesh(m) => Box::new(Arc::clone(m)),
             };
             let material: SharedMaterial<F, R> = match o.material {
                 MaterialKind::Mirror(m) => Arc::new(m).into(),
@@ -158,7 +162,7 @@ impl<F: Float, S, M> Scene<F, S, M> {
     }
 }
 
-impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
+impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
     /// Whether intersection goes through a BVH (building it if it is due).
     pub fn uses_bvh(&self) -> bool {
         self.index().uses_bvh()
@@ -170,8 +174,9 @@ impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
             .get_or_init(|| Index::build(&self.objects, self.acceleration))
     }
 
-    /// The nearest hit in `(0, t_max)` and the material hit. At equal distance the object
-    /// added first wins, so the answer never depends on the acceleration structure.
+    /// The nearest hit in `(0, t_max)` and the material hit. At equal distance the part
+    /// that comes first wins (the object added first; of a mesh's triangles, the first),
+    /// so the answer never depends on the acceleration structure.
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &M)> {
         let (hit, object) = self.index().hit(&self.objects, ray, t_max)?;
@@ -191,7 +196,7 @@ impl<F: Float, S: Hittable<F>, M> Scene<F, S, M> {
         self.index().hit_all(&self.objects, rays, near, each);
     }
 
-    /// Whether any object blocks the ray in `(0, t_max)`; stops at the first.
+    /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.
     #[inline]
     pub fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
         self.index().occluded(&self.objects, ray, t_max)

@@ -1,18 +1,22 @@
 //! The spec's abstract object: the [`Hittable`] trait, the [`Hit`] it reports, and
 //! [`ShapeKind`], the enum fast path over the concrete shapes.
 
+mod mesh;
 mod plane;
 mod sphere;
 mod sphere4;
 mod triangle;
+mod triangle4;
 
+pub use mesh::Mesh;
 pub use plane::Plane;
-pub use sphere::{Sphere, TEXTBOOK_T_MIN, textbook_sphere_hit};
-pub(crate) use sphere4::LANES;
-// Public, hidden: only for the packet bench in benches/primitives.rs.
+pub use sphere::{Sphere, TEXTBOOK_T_MIN, textbook_sphere_hit, textbook_sphere_record, textbook_sphere_t};
+// Public, hidden: only for the packet benches in benches/primitives.rs.
 #[doc(hidden)]
 pub use sphere4::Sphere4;
 pub use triangle::Triangle;
+#[doc(hidden)]
+pub use triangle4::Triangle4;
 
 use crate::aabb::Aabb;
 use crate::float::Float;
@@ -108,10 +112,49 @@ pub fn flat_hit_error<F: Float>(ray: &Ray<F>, t: F, anchor: Vec3<F>) -> Vec3<F> 
     (ray.origin.abs() + (ray.direction * t).abs() + anchor.abs()) * F::gamma(10)
 }
 
+/// Where a ray meets a shape, before the [`Hit`] record is made: the first phase of
+/// [`Hittable`]'s two-phase protocol. A scene keeps the nearest of these and makes the
+/// record for that one only ([`Hittable::finish`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Intersection<F> {
+    /// The ray parameter, in `(0, t_max)`.
+    pub t: F,
+    /// Which part of the shape was hit: a mesh's triangle; 0 for a shape of one part.
+    pub part: u32,
+    /// Where on the part, in the part's own coordinates, for [`Hittable::finish`]: a
+    /// triangle's barycentric weights of `A`, `B`, `C`. Spheres and planes leave them 0.
+    pub coords: [F; 3],
+}
+
+impl<F: Float> Intersection<F> {
+    /// An intersection at `t` on part 0, with no coordinates: what a sphere, a plane or a
+    /// shape of the user's that needs only `t` for its record reports.
+    #[inline]
+    pub fn at(t: F) -> Self {
+        Self {
+            t,
+            part: 0,
+            coords: [F::zero(); 3],
+        }
+    }
+}
+
 /// A surface a ray can hit: the specification's abstract object.
 ///
 /// Usable as a trait object (`Box<dyn Hittable<F>>`, the spec's vector of pointers)
 /// and implemented by the enum [`ShapeKind`] for compile-time dispatch.
+///
+/// # Two phases
+/// A ray may meet many shapes and needs the record of the nearest only, so a hit comes in
+/// two steps: [`intersect`](Hittable::intersect) finds the nearest `t` and what the record
+/// will need (cheap, run for every candidate), and [`finish`](Hittable::finish) makes the
+/// full [`Hit`] from it (run once, for the winner). [`hit`](Hittable::hit) does both.
+///
+/// # Parts
+/// A shape may be made of parts that a scene indexes one by one: a [`Mesh`]'s triangles.
+/// Such a shape says how many ([`parts`](Hittable::parts)), bounds each
+/// ([`part_bounds`](Hittable::part_bounds)) and intersects each alone
+/// ([`intersect_part`](Hittable::intersect_part)); a shape of one part keeps the defaults.
 ///
 /// # Reporting the rounding error
 /// A secondary ray starts at [`offset_ray_origin`]`(point, error, normal, direction)`,
@@ -131,49 +174,69 @@ pub fn flat_hit_error<F: Float>(ray: &Ray<F>, t: F, anchor: Vec3<F>) -> Vec3<F> 
 /// ("shadow acne"), worse the farther the shape is from the world origin for its size,
 /// where the rounding is coarser (`tests/custom_shape.rs` counts them).
 pub trait Hittable<F: Float> {
-    /// The nearest hit with `t` in the open interval `(0, t_max)`, if any.
+    /// The nearest intersection with `t` in the open interval `(0, t_max)`, if any.
     ///
     /// The interval is open at 0 and no larger `t_min` is needed: secondary rays start
     /// at [`offset_ray_origin`], past the surface's rounding error.
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>>;
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>>;
+
+    /// The hit record of `hit`, an intersection this shape reported for `ray`.
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F>;
+
+    /// The nearest hit in `(0, t_max)`, both phases at once.
+    #[inline]
+    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+        let i = self.intersect(ray, t_max)?;
+        Some(self.finish(ray, &i))
+    }
 
     /// Whether anything blocks the ray before `t_max` (pbrt's `IntersectP`): an
     /// any-hit query for shadow rays, which may stop at the first occluder.
     #[inline]
     fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        self.hit(ray, t_max).is_some()
+        self.intersect(ray, t_max).is_some()
     }
 
     /// A box holding the whole shape, or `None` if it is unbounded (a plane) or the
-    /// implementor does not say; only bounded shapes go into a scene's [`Bvh`](crate::bvh::Bvh).
+    /// implementor does not say; only bounded parts go into a scene's [`Bvh`](crate::bvh::Bvh).
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
         None
     }
 
-    /// The sphere this shape is, if it is exactly a [`Sphere`]: a scene packs those four
-    /// to a packet and tests them at once (SIMD lanes), and builds the full [`Hit`] only
-    /// for the nearest.
-    ///
-    /// Only a concrete type can answer (`where Self: Sized` keeps the method out of the
-    /// vtable): a trait object hides what it is, so a scene of `Box<dyn Hittable>` tests
-    /// each shape through its own [`hit`](Hittable::hit). This layout is what the enum
-    /// fast path buys beyond the `match` itself.
-    ///
-    /// An implementor that answers `Some(s)` promises that its `hit` is `s.hit`: the scene
-    /// then tests `s` instead.
+    /// How many parts a scene indexes this shape as (1 unless it is made of several).
     #[inline]
-    fn as_sphere(&self) -> Option<&Sphere<F>>
-    where
-        Self: Sized,
-    {
-        None
+    fn parts(&self) -> u32 {
+        1
+    }
+
+    /// A box holding part `part` (in `0..parts()`), or `None` if it is unbounded.
+    #[inline]
+    fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
+        let _ = part;
+        self.bounds()
+    }
+
+    /// [`intersect`](Hittable::intersect) for part `part` alone; the answer's
+    /// [`part`](Intersection::part) is `part`.
+    #[inline]
+    fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        let _ = part;
+        self.intersect(ray, t_max)
     }
 }
 
 macro_rules! forward_hittable {
     ($($ptr:ty),*) => {$(
         impl<F: Float, T: Hittable<F> + ?Sized> Hittable<F> for $ptr {
+            #[inline]
+            fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+                (**self).intersect(ray, t_max)
+            }
+            #[inline]
+            fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+                (**self).finish(ray, hit)
+            }
             #[inline]
             fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
                 (**self).hit(ray, t_max)
@@ -185,6 +248,18 @@ macro_rules! forward_hittable {
             #[inline]
             fn bounds(&self) -> Option<Aabb<F>> {
                 (**self).bounds()
+            }
+            #[inline]
+            fn parts(&self) -> u32 {
+                (**self).parts()
+            }
+            #[inline]
+            fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
+                (**self).part_bounds(part)
+            }
+            #[inline]
+            fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+                (**self).intersect_part(part, ray, t_max)
             }
         }
     )*};
@@ -200,7 +275,7 @@ impl<F: Float, T: Hittable<F> + Send + Sync + 'static> From<Box<T>> for Box<dyn 
 }
 
 /// The enum fast path: every concrete shape, dispatched by `match` (no vtable, no box).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum ShapeKind<F> {
     /// A [`Sphere`].
     Sphere(Sphere<F>),
@@ -208,39 +283,51 @@ pub enum ShapeKind<F> {
     Plane(Plane<F>),
     /// A [`Triangle`].
     Triangle(Triangle<F>),
+    /// A triangle [`Mesh`], shared: cloning the shape does not copy its buffers.
+    Mesh(Arc<Mesh<F>>),
+}
+
+/// `match` on a [`ShapeKind`], the same call on every variant. (`Hittable::intersect(s, …)`
+/// where a shape has an inherent `intersect` of its own.)
+macro_rules! each_shape {
+    ($shape:expr, $s:ident => $call:expr) => {
+        match $shape {
+            ShapeKind::Sphere($s) => $call,
+            ShapeKind::Plane($s) => $call,
+            ShapeKind::Triangle($s) => $call,
+            ShapeKind::Mesh($s) => $call,
+        }
+    };
 }
 
 impl<F: Float> Hittable<F> for ShapeKind<F> {
     #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        match self {
-            Self::Sphere(s) => s.hit(ray, t_max),
-            Self::Plane(p) => p.hit(ray, t_max),
-            Self::Triangle(t) => t.hit(ray, t_max),
-        }
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        each_shape!(self, s => Hittable::intersect(s, ray, t_max))
+    }
+    #[inline]
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        each_shape!(self, s => s.finish(ray, hit))
     }
     #[inline]
     fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        match self {
-            Self::Sphere(s) => s.occluded(ray, t_max),
-            Self::Plane(p) => p.occluded(ray, t_max),
-            Self::Triangle(t) => t.occluded(ray, t_max),
-        }
+        each_shape!(self, s => s.occluded(ray, t_max))
     }
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
-        match self {
-            Self::Sphere(s) => s.bounds(),
-            Self::Plane(p) => p.bounds(),
-            Self::Triangle(t) => t.bounds(),
-        }
+        each_shape!(self, s => s.bounds())
     }
     #[inline]
-    fn as_sphere(&self) -> Option<&Sphere<F>> {
-        match self {
-            Self::Sphere(s) => Some(s),
-            _ => None,
-        }
+    fn parts(&self) -> u32 {
+        each_shape!(self, s => s.parts())
+    }
+    #[inline]
+    fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
+        each_shape!(self, s => s.part_bounds(part))
+    }
+    #[inline]
+    fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        each_shape!(self, s => s.intersect_part(part, ray, t_max))
     }
 }
 
@@ -262,6 +349,18 @@ impl<F> From<Triangle<F>> for ShapeKind<F> {
     }
 }
 
+impl<F> From<Mesh<F>> for ShapeKind<F> {
+    fn from(m: Mesh<F>) -> Self {
+        Self::Mesh(Arc::new(m))
+    }
+}
+
+impl<F> From<Arc<Mesh<F>>> for ShapeKind<F> {
+    fn from(m: Arc<Mesh<F>>) -> Self {
+        Self::Mesh(m)
+    }
+}
+
 impl<F: Float> ShapeKind<F> {
     /// This shape in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
     pub fn cast<G: Float>(&self) -> crate::error::Result<ShapeKind<G>> {
@@ -269,6 +368,7 @@ impl<F: Float> ShapeKind<F> {
             Self::Sphere(s) => s.cast()?.into(),
             Self::Plane(p) => p.cast()?.into(),
             Self::Triangle(t) => t.cast()?.into(),
+            Self::Mesh(m) => m.cast()?.into(),
         })
     }
 }

@@ -12,7 +12,7 @@ use rand::SeedableRng;
 use raytrace::optics::reflect;
 use raytrace::prelude::*;
 use raytrace::sampling::{lambertian_direction, orthonormal_basis, uniform};
-use raytrace::{DefaultRng, Hit, Image};
+use raytrace::{DefaultRng, Hit, Image, Intersection};
 
 /// Bits of every channel of every pixel.
 fn bits(image: &Image) -> Vec<u64> {
@@ -20,7 +20,7 @@ fn bits(image: &Image) -> Vec<u64> {
 }
 
 /// The example's scene at 40×20, 4 samples, depth 8: the trait-object path and the enum
-/// path (the user's `Shape`/`Surface`, spheres passed on by `as_sphere`) give the same bits
+/// path (the user's `Shape`/`Surface`, the library's shapes passed on by its `Layout`) give the same bits
 /// and ray counts. This proves the user's enums forward every query faithfully.
 fn paths_agree<F: Float>() {
     let camera = ScreenCamera::new(40, 20).unwrap();
@@ -46,12 +46,14 @@ fn dispatch_paths_give_the_same_bytes_f64() {
 struct ZeroError<F>(Disk<F>);
 
 impl<F: Float> Hittable<F> for ZeroError<F> {
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        let h = self.0.hit(ray, t_max)?;
-        Some(Hit {
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.0.intersect(ray, t_max)
+    }
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        Hit {
             error: Vec3::zero(),
-            ..h
-        })
+            ..self.0.finish(ray, hit)
+        }
     }
 }
 

@@ -281,7 +281,7 @@ fn build<F: Float>(d: &SceneDesc) -> EnumScene<F> {
 fn render_desc<F, S, M>(scene: &Scene<F, S, M>, d: &SceneDesc) -> Image
 where
     F: Float,
-    S: Hittable<F> + Sync,
+    S: Layout<F> + Sync,
     M: Material<F, DefaultRng> + Sync,
 {
     let settings = RenderSettings::new(d.spp, d.max_depth, d.seed).unwrap();
@@ -363,7 +363,7 @@ fn checks_reject_broken_materials<F: Float>() {
     let dyn_scene = |d: &SceneDesc, gain: F| {
         let mut scene = DynScene::<F, DefaultRng>::new(Background::solid(Vec3::splat(F::one())).unwrap());
         for o in build::<F>(d).objects() {
-            let shape: Box<dyn Hittable<F> + Send + Sync> = Box::new(o.shape);
+            let shape: Box<dyn Hittable<F> + Send + Sync> = Box::new(o.shape.clone());
             scene.add(shape, Arc::new(Broken { gain }));
         }
         scene

@@ -53,7 +53,7 @@ fn first_difference(a: &Image, b: &Image) -> Option<usize> {
 /// count, on 1 and 2 threads.
 fn check<F: Float, S, M>(name: &str, scene: &Scene<F, S, M>, camera: &(dyn Camera<F> + Sync), spp: u32)
 where
-    S: Hittable<F> + Sync,
+    S: Layout<F> + Sync,
     M: Material<F, DefaultRng> + Sync,
 {
     let renderer = Renderer::new(scene, &camera).spp(spp).max_depth(12).seed(7);

@@ -6,7 +6,7 @@ use rand::SeedableRng;
 use raytrace::prelude::*;
 use raytrace::render::Tracer;
 use raytrace::shape::Hit;
-use raytrace::{DefaultRng, Image, SharedMaterial};
+use raytrace::{DefaultRng, Image, Intersection, SharedMaterial};
 use std::sync::Arc;
 use twofloat::TwoFloat;
 
@@ -199,25 +199,33 @@ fn every_scalar_renders_and_follows_one_random_stream() {
 struct Corridor;
 
 impl Hittable<f64> for Corridor {
-    fn hit(&self, ray: &Ray<f64>, t_max: f64) -> Option<Hit<f64>> {
-        let mut best: Option<Hit<f64>> = None;
+    fn intersect(&self, ray: &Ray<f64>, t_max: f64) -> Option<Intersection<f64>> {
+        let mut best: Option<Intersection<f64>> = None;
         for wall in [0.0, 1.0] {
             let t = (wall - ray.origin.y) / ray.direction.y;
-            let p = ray.at(t);
-            if t > 1e-9 && t < best.map_or(t_max, |h| h.t) && p.x < 5.0 {
-                let p = Vec3::new(p.x, wall, p.z);
-                best = Some(Hit::new(
-                    t,
-                    p,
-                    Vec3::zero(),
-                    Vec3::new(0.0, 1.0, 0.0),
-                    ray.direction,
-                ));
+            if t > 1e-9 && t < best.map_or(t_max, |h| h.t) && ray.at(t).x < 5.0 {
+                best = Some(Intersection::at(t));
             }
         }
         best
     }
+
+    fn finish(&self, ray: &Ray<f64>, hit: &Intersection<f64>) -> Hit<f64> {
+        let p = ray.at(hit.t);
+        let wall = p.y.round();
+        let normal = Vec3::new(0.0, 1.0, 0.0);
+        Hit::new(
+            hit.t,
+            Vec3::new(p.x, wall, p.z),
+            Vec3::zero(),
+            normal,
+            ray.direction,
+        )
+    }
 }
+
+// Not packed in lanes: every query goes through the two methods above.
+impl Layout<f64> for Corridor {}
 
 #[test]
 fn max_depth_is_exact() {

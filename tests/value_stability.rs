@@ -95,7 +95,9 @@ fn double_double_images_are_pinned() {
         ("four_mirrors", 0xA101_20F5_E5D7_4CE9),
         ("matte_spheres", 0x4F41_B8C9_91A4_CB29),
         ("glass", 0xEF4E_0C95_B159_4F95),
-        ("plane_and_triangles", 0x266F_3967_9CD0_05B7),
+        // Changed when a triangle asked with no bound stopped missing in double-double
+        // (`∞·det` is NaN there), which had hidden triangles met before anything else.
+        ("plane_and_triangles", 0x303C_887F_E0C4_6576),
         ("point_lights", 0x29F6_DF36_E637_79F6),
         ("random_spheres", 0x5E24_2E6B_69CE_52FE),
     ]);

@@ -7,8 +7,9 @@ use raytrace::aabb::Aabb;
 use raytrace::prelude::*;
 use raytrace::rand::Rng;
 use raytrace::sampling::lambertian_direction;
+use raytrace::scene::Primitive;
 use raytrace::shape::flat_hit_error;
-use raytrace::{DefaultRng, Hit, Scatter};
+use raytrace::{DefaultRng, Hit, Intersection, Scatter};
 use std::sync::Arc;
 
 /// A flat round disk: the points of the plane through `center` with unit normal `n` that
@@ -35,18 +36,22 @@ impl<F: Float> Disk<F> {
 }
 
 impl<F: Float> Hittable<F> for Disk<F> {
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+    // Phase one, run for every disk a ray might meet: where, and nothing more.
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
         // The plane's t = ((C − O)·n)/(D·n), with its conservative t > 0 test: a ray spawned
         // from this disk must not find it again through a wrongly rounded sign.
         let t = self.plane.intersect(ray, t_max)?;
-        let (center, point) = (self.plane.point(), ray.at(t));
         // Inside the disk: |P − C|² ≤ r².
-        if (point - center).length_squared() > self.radius * self.radius {
-            return None;
-        }
+        let inside = (ray.at(t) - self.plane.point()).length_squared() <= self.radius * self.radius;
+        inside.then(|| Intersection::at(t))
+    }
+
+    // Phase two, run once, for the nearest hit only: the record.
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        let point = ray.at(hit.t);
         // The box around `point` that holds the true plane, so spawned rays start past it.
-        let error = flat_hit_error(ray, t, center);
-        Some(Hit::new(t, point, error, self.plane.normal(), ray.direction))
+        let error = flat_hit_error(ray, hit.t, self.plane.point());
+        Hit::new(hit.t, point, error, self.plane.normal(), ray.direction)
     }
 
     /// Along axis `i` a disk reaches `r·√(1 − nᵢ²) = r·√(nⱼ² + nₖ²)` from its centre (the
@@ -100,25 +105,25 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for Checker<F> {
 }
 
 /// Every shape of the enum path: the library's and the user's.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Shape<F> {
-    /// A sphere, plane or triangle.
+    /// A sphere, plane, triangle or mesh.
     Library(ShapeKind<F>),
     /// The user's disk.
     Disk(Disk<F>),
 }
 
 impl<F: Float> Hittable<F> for Shape<F> {
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
         match self {
-            Self::Library(s) => s.hit(ray, t_max),
-            Self::Disk(d) => d.hit(ray, t_max),
+            Self::Library(s) => s.intersect(ray, t_max),
+            Self::Disk(d) => d.intersect(ray, t_max),
         }
     }
-    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         match self {
-            Self::Library(s) => s.occluded(ray, t_max),
-            Self::Disk(d) => d.occluded(ray, t_max),
+            Self::Library(s) => s.finish(ray, hit),
+            Self::Disk(d) => d.finish(ray, hit),
         }
     }
     fn bounds(&self) -> Option<Aabb<F>> {
@@ -127,11 +132,34 @@ impl<F: Float> Hittable<F> for Shape<F> {
             Self::Disk(d) => d.bounds(),
         }
     }
-    // Passing the spheres on keeps the library's fast path: tested four at a time.
-    fn as_sphere(&self) -> Option<&Sphere<F>> {
+    // A mesh is made of parts, which the scene indexes one by one.
+    fn parts(&self) -> u32 {
         match self {
-            Self::Library(s) => s.as_sphere(),
-            Self::Disk(_) => None,
+            Self::Library(s) => s.parts(),
+            Self::Disk(d) => d.parts(),
+        }
+    }
+    fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
+        match self {
+            Self::Library(s) => s.part_bounds(part),
+            Self::Disk(d) => d.part_bounds(part),
+        }
+    }
+    fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        match self {
+            Self::Library(s) => s.intersect_part(part, ray, t_max),
+            Self::Disk(d) => d.intersect_part(part, ray, t_max),
+        }
+    }
+}
+
+// Passing the library's shapes on keeps their fast path: spheres and triangles tested four
+// at a time. The disk keeps the default: tested on its own, through `intersect_part`.
+impl<F: Float> Layout<F> for Shape<F> {
+    fn primitive(&self, part: u32) -> Primitive<F> {
+        match self {
+            Self::Library(s) => s.primitive(part),
+            Self::Disk(_) => Primitive::Other,
         }
     }
 }

@@ -52,7 +52,7 @@ fn render_case<F: Float>(case: &Case, textbook: bool, seed: u64) -> raytrace::Re
 }
 
 /// Renders `scene`, a case's scene in scalar `F`, with the case's camera and settings.
-fn render_scene<F: Float, S: Hittable<F> + Sync>(
+fn render_scene<F: Float, S: Layout<F> + Sync>(
     case: &Case,
     scene: &Scene<F, S, MaterialKind<F>>,
     seed: u64,

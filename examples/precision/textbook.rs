@@ -2,19 +2,25 @@
 //! intersected the textbook way, and the study's shape enum that holds it beside the
 //! library's shapes. The library's [`ShapeKind`] carries only the production shapes.
 
+use raytrace::Intersection;
 use raytrace::aabb::Aabb;
 use raytrace::prelude::*;
-use raytrace::shape::{Hit, TEXTBOOK_T_MIN, textbook_sphere_hit};
+use raytrace::scene::Primitive;
+use raytrace::shape::{Hit, TEXTBOOK_T_MIN, textbook_sphere_record, textbook_sphere_t};
 
-/// A sphere intersected the textbook way ([`textbook_sphere_hit`] with `t_min = 0.001`
+/// A sphere intersected the textbook way ([`raytrace::shape::textbook_sphere_hit`] with `t_min = 0.001`
 /// and no error bound, so spawned rays start at the rounded hit point).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TextbookSphere<F>(pub Sphere<F>);
 
 impl<F: Float> Hittable<F> for TextbookSphere<F> {
     #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        textbook_sphere_hit(&self.0, ray, lit(TEXTBOOK_T_MIN), t_max)
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        textbook_sphere_t(&self.0, ray, lit(TEXTBOOK_T_MIN), t_max).map(Intersection::at)
+    }
+    #[inline]
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        textbook_sphere_record(&self.0, ray, hit.t)
     }
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
@@ -23,7 +29,7 @@ impl<F: Float> Hittable<F> for TextbookSphere<F> {
 }
 
 /// The study's shapes: the library's, or a textbook sphere.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum StudyShape<F> {
     /// A production shape, intersected as the library does.
     Kind(ShapeKind<F>),
@@ -33,17 +39,17 @@ pub enum StudyShape<F> {
 
 impl<F: Float> Hittable<F> for StudyShape<F> {
     #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
         match self {
-            Self::Kind(k) => k.hit(ray, t_max),
-            Self::Textbook(s) => s.hit(ray, t_max),
+            Self::Kind(k) => k.intersect(ray, t_max),
+            Self::Textbook(s) => s.intersect(ray, t_max),
         }
     }
     #[inline]
-    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         match self {
-            Self::Kind(k) => k.occluded(ray, t_max),
-            Self::Textbook(s) => s.occluded(ray, t_max),
+            Self::Kind(k) => k.finish(ray, hit),
+            Self::Textbook(s) => s.finish(ray, hit),
         }
     }
     #[inline]
@@ -53,12 +59,37 @@ impl<F: Float> Hittable<F> for StudyShape<F> {
             Self::Textbook(s) => s.bounds(),
         }
     }
-    // A textbook sphere must not answer: the scene would test it the stable way.
     #[inline]
-    fn as_sphere(&self) -> Option<&Sphere<F>> {
+    fn parts(&self) -> u32 {
         match self {
-            Self::Kind(k) => k.as_sphere(),
-            Self::Textbook(_) => None,
+            Self::Kind(k) => k.parts(),
+            Self::Textbook(s) => s.parts(),
+        }
+    }
+    #[inline]
+    fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
+        match self {
+            Self::Kind(k) => k.part_bounds(part),
+            Self::Textbook(s) => s.part_bounds(part),
+        }
+    }
+    #[inline]
+    fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        match self {
+            Self::Kind(k) => k.intersect_part(part, ray, t_max),
+            Self::Textbook(s) => s.intersect_part(part, ray, t_max),
+        }
+    }
+}
+
+// The library's shapes keep their lanes. A textbook sphere must not be described as a
+// sphere: the scene would test it the stable way.
+impl<F: Float> Layout<F> for StudyShape<F> {
+    #[inline]
+    fn primitive(&self, part: u32) -> Primitive<F> {
+        match self {
+            Self::Kind(k) => k.primitive(part),
+            Self::Textbook(_) => Primitive::Other,
         }
     }
 }
@@ -72,9 +103,9 @@ pub fn to_textbook<F: Float>(scene: &EnumScene<F>) -> StudyScene<F> {
     let mut out = StudyScene::new(*scene.background());
     out.set_acceleration(scene.acceleration());
     for o in scene.objects() {
-        let shape = match o.shape {
-            ShapeKind::Sphere(s) => StudyShape::Textbook(TextbookSphere(s)),
-            other => StudyShape::Kind(other),
+        let shape = match &o.shape {
+            ShapeKind::Sphere(s) => StudyShape::Textbook(TextbookSphere(*s)),
+            other => StudyShape::Kind(other.clone()),
         };
         out.add(shape, o.material);
     }

@@ -21,8 +21,8 @@ use crate::camera::Camera;
 use crate::float::Float;
 use crate::material::Material;
 use crate::ray::Ray;
+use crate::scene::Layout;
 use crate::scene::Nearests;
-use crate::shape::Hittable;
 use crate::vec3::Color;
 use rand::{Rng, SeedableRng};
 
@@ -77,7 +77,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         at: impl Fn(usize) -> (usize, usize),
         out: &mut [[f64; 3]],
     ) where
-        S: Hittable<F>,
+        S: Layout<F>,
         M: Material<F, R>,
         C: Camera<F>,
     {
@@ -117,7 +117,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
     /// Traces the started paths to their ends and leaves each pixel's colour in `ends`.
     fn trace<S, M>(&mut self, tracer: &mut Tracer<'_, F, S, M>)
     where
-        S: Hittable<F>,
+        S: Layout<F>,
         M: Material<F, R>,
     {
         self.ends.clear();

@@ -13,8 +13,8 @@ use crate::image::Image;
 use crate::material::Material;
 use crate::ray::Ray;
 use crate::sampling::pixel_jitter;
+use crate::scene::Layout;
 use crate::scene::Scene;
-use crate::shape::Hittable;
 use crate::vec3::Color;
 use rand::{Rng, SeedableRng};
 use std::time::Instant;
@@ -33,7 +33,7 @@ pub fn render_reference<R, F, S, M, C>(
 where
     R: Rng + SeedableRng,
     F: Float,
-    S: Hittable<F>,
+    S: Layout<F>,
     M: Material<F, R>,
     C: Camera<F>,
 {

@@ -3,8 +3,9 @@
 use crate::float::{Float, lit};
 use crate::material::Material;
 use crate::ray::Ray;
+use crate::scene::Layout;
 use crate::scene::Scene;
-use crate::shape::{Hit, Hittable, offset_ray_origin};
+use crate::shape::{Hit, offset_ray_origin};
 use crate::vec3::Color;
 use rand::Rng;
 
@@ -32,7 +33,7 @@ pub struct Tracer<'a, F, S, M> {
     pub(super) rays: u64,
 }
 
-impl<'a, F: Float, S: Hittable<F>, M> Tracer<'a, F, S, M> {
+impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
     /// A tracer for `scene` that lets paths bounce at most `max_depth` times.
     pub fn new(scene: &'a Scene<F, S, M>, max_depth: u32) -> Self {
         Self {

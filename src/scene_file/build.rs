@@ -15,7 +15,7 @@ use crate::light::PointLight;
 use crate::material::{Dielectric, Lambertian, MaterialKind, Mirror, Reflectance};
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
-use crate::shape::{Hittable, Plane, ShapeKind, Sphere, Triangle};
+use crate::shape::{Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -290,22 +290,10 @@ fn add_object<F: Float>(
                 }
                 vertices.push(v);
             }
-            for (k, tri) in mesh.triangles.iter().enumerate() {
-                let corner = |i: u32| vertices.get(i as usize).copied();
-                let (Some(a), Some(b), Some(c)) = (corner(tri[0]), corner(tri[1]), corner(tri[2])) else {
-                    return Err(at.key("file").error(format!(
-                        "triangle {k} of the mesh indexes a vertex past its {} vertices: {tri:?}",
-                        vertices.len()
-                    )));
-                };
-                // Placement and rounding can flatten a face: leave it out and count it.
-                match Triangle::new(a, b, c) {
-                    Ok(t) => {
-                        scene.add(t, material);
-                    }
-                    Err(_) => summary.skipped_degenerate += 1,
-                }
-            }
+            // Placement and rounding can flatten a face: the mesh leaves it out and counts it.
+            let shape = Mesh::new(vertices, mesh.triangles).map_err(|e| at.key("file").wrap(e))?;
+            summary.skipped_degenerate += shape.skipped_degenerate();
+            scene.add(shape, material);
             summary.meshes += 1;
             summary.skipped_degenerate += mesh.skipped_degenerate;
         }
@@ -329,10 +317,11 @@ fn point_light<F: Float>(at: &Field, spec: &LightSpec) -> Result<PointLight<F>> 
 fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
     let mut bounds: Option<Aabb<f64>> = None;
     for o in scene.objects() {
-        match o.shape {
+        match &o.shape {
             ShapeKind::Sphere(_) => summary.spheres += 1,
             ShapeKind::Plane(_) => summary.planes += 1,
             ShapeKind::Triangle(_) => summary.triangles += 1,
+            ShapeKind::Mesh(m) => summary.triangles += m.parts() as usize,
         }
         if let Some(b) = o.shape.bounds() {
             let b = Aabb::new(b.min.cast::<f64>(), b.max.cast::<f64>());

@@ -1,6 +1,6 @@
 //! The infinite plane `(X − P₀)·n = 0`.
 
-use super::{Hit, Hittable, flat_hit_error};
+use super::{Hit, Hittable, Intersection, flat_hit_error};
 use crate::error::Result;
 use crate::float::Float;
 use crate::ray::Ray;
@@ -99,14 +99,13 @@ impl<F: Float> Plane<F> {
 
 impl<F: Float> Hittable<F> for Plane<F> {
     #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        let t = self.intersect(ray, t_max)?;
-        Some(self.hit_at(ray, t))
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        Plane::intersect(self, ray, t_max).map(Intersection::at)
     }
 
     #[inline]
-    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        self.intersect(ray, t_max).is_some()
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        self.hit_at(ray, hit.t)
     }
 }
 

@@ -1,6 +1,6 @@
 //! The sphere `|X − C|² = r²`.
 
-use super::{Hit, Hittable};
+use super::{Hit, Hittable, Intersection};
 use crate::aabb::Aabb;
 use crate::error::Result;
 use crate::float::{Float, to};
@@ -55,34 +55,6 @@ impl<F: Float> Sphere<F> {
         let f = ray.origin - self.center;
         let b = f.dot(ray.direction);
         let c = f.length_squared() - self.radius * self.radius;
-        self.roots_from(ray, f, b, c)
-    }
-
-    /// The `t` that [`Hittable::hit`] reports with no bound (`t_max = +∞`), without the
-    /// hit record: the test a scene runs on a sphere it packs alone (see [`Sphere4`] for
-    /// four). Like the packet, it stops before the square root when the line misses or
-    /// the sphere is behind the ray (outside it, `c > 0`, and heading away, `b > 0`).
-    ///
-    /// [`Sphere4`]: super::Sphere4
-    #[inline(always)]
-    pub(crate) fn nearest_t(&self, ray: &Ray<F>) -> Option<F> {
-        let f = ray.origin - self.center;
-        let b = f.dot(ray.direction);
-        let c = f.length_squared() - self.radius * self.radius;
-        let l = f - ray.direction * b;
-        let disc = self.radius * self.radius - l.length_squared();
-        // One branch for both early outs (`|` on the comparisons, not `||`).
-        if (disc < F::zero()) | ((c > F::zero()) & (b > F::zero())) {
-            return None;
-        }
-        let (t0, t1) = self.roots_from(ray, f, b, c)?;
-        let t = if t0 > F::zero() { t0 } else { t1 };
-        (t > F::zero()).then_some(t)
-    }
-
-    /// [`Sphere::roots`] from `f = O − C`, `b = f·D` and `c = |f|² − r²`.
-    #[inline(always)]
-    fn roots_from(&self, ray: &Ray<F>, f: Vec3<F>, b: F, c: F) -> Option<(F, F)> {
         let l = f - ray.direction * b;
         let disc = self.radius * self.radius - l.length_squared();
         if disc < F::zero() {
@@ -95,7 +67,7 @@ impl<F: Float> Sphere<F> {
     }
 
     /// The hit at parameter `t` (a root from [`Sphere::roots`]), with the point moved back
-    /// onto the surface and its rounding-error bound: what [`Hittable::hit`] reports.
+    /// onto the surface and its rounding-error bound: what [`Hittable::finish`] reports.
     ///
     /// # Precision
     /// pbrt-v4 §6.8.5: after reprojection `p ← C + (p − C)·r/|p − C|` each component of
@@ -104,7 +76,7 @@ impl<F: Float> Sphere<F> {
     /// the bound per component is `γ(5)|p − C| + γ(1)|p|`; we use `γ(6)|p − C| + γ(2)|p|`,
     /// since the tests see the tighter bound reached to 96 % in the worst of 10⁵ rays.
     #[inline]
-    pub(crate) fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
+    fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
         let l = ray.at(t) - self.center;
         let len = l.length();
         let local = l * (self.radius / len);
@@ -117,16 +89,18 @@ impl<F: Float> Sphere<F> {
 }
 
 impl<F: Float> Hittable<F> for Sphere<F> {
+    /// The nearer root in `(0, t_max)`; [`Sphere4`](super::Sphere4) gives the same `t` four
+    /// spheres at a time.
     #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        let f = ray.origin - self.center;
-        let b = f.dot(ray.direction);
-        let c = f.length_squared() - self.radius * self.radius;
-        // (An early exit for `c > 0 && b > 0`, outside and heading away, was measured
-        // 14 % slower on `matte_spheres`: the branch is unpredictable for diffuse rays.)
-        let (t0, t1) = self.roots_from(ray, f, b, c)?;
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        let (t0, t1) = self.roots(ray)?;
         let t = if t0 > F::zero() { t0 } else { t1 };
-        (t > F::zero() && t < t_max).then(|| self.hit_at(ray, t))
+        (t > F::zero() && t < t_max).then(|| Intersection::at(t))
+    }
+
+    #[inline]
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        self.hit_at(ray, hit.t)
     }
 
     /// `C ± r`, widened by the rounding of the two sums (`γ(1)(|C| + r)`).
@@ -134,11 +108,6 @@ impl<F: Float> Hittable<F> for Sphere<F> {
     fn bounds(&self) -> Option<Aabb<F>> {
         let pad = (self.center.abs() + Vec3::splat(self.radius)) * F::gamma(1) + Vec3::splat(self.radius);
         Some(Aabb::new(self.center - pad, self.center + pad))
-    }
-
-    #[inline]
-    fn as_sphere(&self) -> Option<&Sphere<F>> {
-        Some(self)
     }
 }
 
@@ -154,6 +123,12 @@ impl<F: Float> Hittable<F> for Sphere<F> {
 /// `O + tD` is not reprojected and carries no error bound, which is why the textbook
 /// needs a fixed `t_min`.
 pub fn textbook_sphere_hit<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t_min: F, t_max: F) -> Option<Hit<F>> {
+    let t = textbook_sphere_t(s, ray, t_min, t_max)?;
+    Some(textbook_sphere_record(s, ray, t))
+}
+
+/// The `t` of [`textbook_sphere_hit`]: its first phase.
+pub fn textbook_sphere_t<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t_min: F, t_max: F) -> Option<F> {
     let two = F::one() + F::one();
     let f = ray.origin - s.center;
     let a = ray.direction.dot(ray.direction);
@@ -164,17 +139,22 @@ pub fn textbook_sphere_hit<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t_min: F, t_ma
         return None;
     }
     let sqrt_d = disc.sqrt();
-    let t = [(-b - sqrt_d) / (two * a), (-b + sqrt_d) / (two * a)]
+    [(-b - sqrt_d) / (two * a), (-b + sqrt_d) / (two * a)]
         .into_iter()
-        .find(|&t| t > t_min && t < t_max)?;
+        .find(|&t| t > t_min && t < t_max)
+}
+
+/// The record of [`textbook_sphere_hit`] at `t`: the point `O + tD` as computed, no error
+/// bound, the normal `(P − C)/r`.
+pub fn textbook_sphere_record<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t: F) -> Hit<F> {
     let point = ray.at(t);
-    Some(Hit::new(
+    Hit::new(
         t,
         point,
         Vec3::zero(),
         (point - s.center) / s.radius,
         ray.direction,
-    ))
+    )
 }
 
 /// The textbook's fixed lower bound on `t`, *Ray Tracing in One Weekend*'s `0.001`.

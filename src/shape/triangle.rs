@@ -1,7 +1,7 @@
 //! The triangle `ABC`, intersected watertight (Woop, Benthin and Wald 2013, as in
 //! pbrt-v4's `IntersectTriangle`).
 
-use super::{Hit, Hittable};
+use super::{Hit, Hittable, Intersection};
 use crate::aabb::Aabb;
 use crate::error::{Error, Result};
 use crate::float::Float;
@@ -43,29 +43,9 @@ impl<F: Float> Triangle<F> {
         for v in [a, b, c] {
             validate::finite_vec("triangle", v)?;
         }
-        let (u, v) = (b - a, c - a);
-        // The test is scale-free, so run it on the edges divided by their largest
-        // components: long edges (|u|² overflowing) and short ones are judged alike.
-        let scaled = |e: Vec3<F>| {
-            let m = e.abs().max_element();
-            if m > F::zero() && m.is_finite() {
-                Some(e / m)
-            } else {
-                None
-            }
-        };
-        let (us, vs) = (scaled(u), scaled(v));
-        let (cross_len, threshold) = match (us, vs) {
-            (Some(us), Some(vs)) => (us.cross(vs).length(), F::gamma(6) * us.length() * vs.length()),
-            _ => (F::zero(), F::zero()),
-        };
-        let normal = match (us, vs) {
-            (Some(us), Some(vs)) if cross_len > threshold => us.cross(vs).try_normalize(),
-            _ => None,
-        };
-        match normal {
-            Some(normal) => Ok(Self { a, b, c, normal }),
-            None => Err(Error::invalid(
+        match unit_normal(a, b, c) {
+            Ok(normal) => Ok(Self { a, b, c, normal }),
+            Err((cross_len, threshold)) => Err(Error::invalid(
                 "triangle",
                 format!(
                     "degenerate in {} (|(B − A)×(C − A)| ≤ γ(6)·|B − A|·|C − A| for the scaled edges: \
@@ -103,7 +83,8 @@ impl<F: Float> Triangle<F> {
     /// 3. the ray is now the `z` axis; the 2-D edge functions at the origin are
     ///    `e₀ = BₓC_y − B_yCₓ`, `e₁ = CₓA_y − C_yAₓ`, `e₂ = AₓB_y − A_yBₓ`; the ray hits
     ///    iff they do not have strictly opposite signs and `det = e₀ + e₁ + e₂ ≠ 0`;
-    /// 4. `t = (e₀A_z + e₁B_z + e₂C_z)·S_z / det`, compared with `t_max` before dividing;
+    /// 4. `t = (e₀A_z + e₁B_z + e₂C_z)·S_z / det`, compared with a finite `t_max` before
+    ///    dividing;
     /// 5. `t` must exceed pbrt's bound `δt` on its own rounding error (`δz`, `δx`, `δy`,
     ///    `δe`, `δt` below), so a ray spawned off the surface never re-hits it.
     ///
@@ -123,128 +104,190 @@ impl<F: Float> Triangle<F> {
     /// not correctly rounded, so this argument does not cover it: a double-double render
     /// of a mesh was seen to miss it at a few pixels where `f64` hits.
     pub fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<(F, [F; 3])> {
-        // 1. Translate to the ray origin and permute: kz = the axis of the largest |Dᵢ|.
-        let o = ray.origin;
-        let ad = ray.direction.abs();
-        let kz = if ad.x > ad.y {
-            if ad.x > ad.z { 0 } else { 2 }
-        } else if ad.y > ad.z {
-            1
-        } else {
-            2
-        };
-        let kx = if kz == 2 { 0 } else { kz + 1 };
-        let ky = if kx == 2 { 0 } else { kx + 1 };
-        let permute = |v: Vec3<F>| Vec3::new(v[kx], v[ky], v[kz]);
-        let d = permute(ray.direction);
-        let (a, b, c) = (permute(self.a - o), permute(self.b - o), permute(self.c - o));
+        intersect_vertices(&[self.a, self.b, self.c], ray, t_max)
+    }
+}
 
-        // 2. Shear x and y; z is scaled by S_z only once the edge tests pass.
-        let sx = -d.x / d.z;
-        let sy = -d.y / d.z;
-        let sz = F::one() / d.z;
-        let (ax, ay) = (a.x + sx * a.z, a.y + sy * a.z);
-        let (bx, by) = (b.x + sx * b.z, b.y + sy * b.z);
-        let (cx, cy) = (c.x + sx * c.z, c.y + sy * c.z);
+/// The unit normal `(B − A)×(C − A)/|(B − A)×(C − A)|`, or, for a degenerate triangle
+/// (see [`Triangle::new`]), the computed length of the scaled edges' cross product and the
+/// threshold it did not exceed.
+pub(crate) fn unit_normal<F: Float>(
+    a: Vec3<F>,
+    b: Vec3<F>,
+    c: Vec3<F>,
+) -> std::result::Result<Vec3<F>, (F, F)> {
+    let (Some(us), Some(vs)) = (scaled_edge(b - a), scaled_edge(c - a)) else {
+        return Err((F::zero(), F::zero()));
+    };
+    let cross = us.cross(vs);
+    let (cross_len, threshold) = (cross.length(), F::gamma(6) * us.length() * vs.length());
+    match cross.try_normalize() {
+        Some(n) if cross_len > threshold => Ok(n),
+        _ => Err((cross_len, threshold)),
+    }
+}
 
-        // 3. Edge functions: twice the signed areas of the origin with each edge.
-        let mut e0 = bx * cy - by * cx;
-        let mut e1 = cx * ay - cy * ax;
-        let mut e2 = ax * by - ay * bx;
-        let zero = F::zero();
-        if products_exact_in_f64::<F>() && (e0 == zero || e1 == zero || e2 == zero) {
-            let edge = |px: F, py: F, qx: F, qy: F| {
-                F::from_f64(px.to_f64() * qy.to_f64() - py.to_f64() * qx.to_f64())
-            };
-            e0 = edge(bx, by, cx, cy);
-            e1 = edge(cx, cy, ax, ay);
-            e2 = edge(ax, ay, bx, by);
-        }
-        if (e0 < zero || e1 < zero || e2 < zero) && (e0 > zero || e1 > zero || e2 > zero) {
-            return None;
-        }
-        let det = e0 + e1 + e2;
-        if det == zero {
-            return None;
-        }
+/// [`unit_normal`] of a triangle known to pass its test (a [`Mesh`](super::Mesh)'s, checked
+/// when it was built): the same bits, without the test.
+#[inline]
+pub(crate) fn checked_normal<F: Float>([a, b, c]: [Vec3<F>; 3]) -> Vec3<F> {
+    let unit = |e: Vec3<F>| e / e.abs().max_element();
+    unit(b - a).cross(unit(c - a)).normalize()
+}
 
-        // 4. The scaled distance t·det, tested against (0, t_max) without dividing.
-        let (az, bz, cz) = (a.z * sz, b.z * sz, c.z * sz);
-        let t_scaled = e0 * az + e1 * bz + e2 * cz;
-        let in_range = if det < zero {
-            t_scaled < zero && t_scaled > t_max * det
-        } else {
-            t_scaled > zero && t_scaled < t_max * det
-        };
-        if !in_range {
-            return None;
-        }
-        let inv_det = F::one() / det;
-        let bary = [e0 * inv_det, e1 * inv_det, e2 * inv_det];
-        let t = t_scaled * inv_det;
+/// The edge `e` divided by its largest component, if that is finite and not zero: the
+/// degeneracy test is scale-free, so long edges (`|e|²` overflowing) and short ones are
+/// judged alike.
+#[inline]
+fn scaled_edge<F: Float>(e: Vec3<F>) -> Option<Vec3<F>> {
+    let m = e.abs().max_element();
+    (m > F::zero() && m.is_finite()).then(|| e / m)
+}
 
-        // 5. pbrt-v4's conservative t > 0 (§6.8.4): bounds on the rounding of the
-        // transformed z (δz), x and y (δx, δy), the edge functions (δe) and t (δt).
-        let max3 = |p: F, q: F, r: F| p.abs().max(q.abs()).max(r.abs());
-        let max_z = max3(az, bz, cz);
-        let delta_z = F::gamma(3) * max_z;
-        let max_x = max3(ax, bx, cx);
-        let max_y = max3(ay, by, cy);
-        let delta_x = F::gamma(5) * (max_x + max_z);
-        let delta_y = F::gamma(5) * (max_y + max_z);
-        let two = F::one() + F::one();
-        let delta_e = two * (F::gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-        let max_e = max3(e0, e1, e2);
-        let three = two + F::one();
-        let delta_t =
-            three * (F::gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
-        // Written positively, so a NaN anywhere means "no hit".
-        (t > delta_t && t < t_max).then_some((t, bary))
+/// The watertight intersection of `ray` with the triangle of vertices `v`: [`Triangle::intersect`].
+#[inline]
+pub(crate) fn intersect_vertices<F: Float>(v: &[Vec3<F>; 3], ray: &Ray<F>, t_max: F) -> Option<(F, [F; 3])> {
+    // 1. Translate to the ray origin and permute: kz = the axis of the largest |Dᵢ|.
+    let o = ray.origin;
+    let ad = ray.direction.abs();
+    let kz = if ad.x > ad.y {
+        if ad.x > ad.z { 0 } else { 2 }
+    } else if ad.y > ad.z {
+        1
+    } else {
+        2
+    };
+    let kx = if kz == 2 { 0 } else { kz + 1 };
+    let ky = if kx == 2 { 0 } else { kx + 1 };
+    let permute = |v: Vec3<F>| Vec3::new(v[kx], v[ky], v[kz]);
+    let d = permute(ray.direction);
+    let (a, b, c) = (permute(v[0] - o), permute(v[1] - o), permute(v[2] - o));
+
+    // 2. Shear x and y; z is scaled by S_z only once the edge tests pass.
+    let sx = -d.x / d.z;
+    let sy = -d.y / d.z;
+    let sz = F::one() / d.z;
+    let (ax, ay) = (a.x + sx * a.z, a.y + sy * a.z);
+    let (bx, by) = (b.x + sx * b.z, b.y + sy * b.z);
+    let (cx, cy) = (c.x + sx * c.z, c.y + sy * c.z);
+
+    // 3. Edge functions: twice the signed areas of the origin with each edge.
+    let mut e0 = bx * cy - by * cx;
+    let mut e1 = cx * ay - cy * ax;
+    let mut e2 = ax * by - ay * bx;
+    let zero = F::zero();
+    if products_exact_in_f64::<F>() && (e0 == zero || e1 == zero || e2 == zero) {
+        let edge =
+            |px: F, py: F, qx: F, qy: F| F::from_f64(px.to_f64() * qy.to_f64() - py.to_f64() * qx.to_f64());
+        e0 = edge(bx, by, cx, cy);
+        e1 = edge(cx, cy, ax, ay);
+        e2 = edge(ax, ay, bx, by);
+    }
+    if (e0 < zero || e1 < zero || e2 < zero) && (e0 > zero || e1 > zero || e2 > zero) {
+        return None;
+    }
+    let det = e0 + e1 + e2;
+    if det == zero {
+        return None;
     }
 
-    /// The hit with barycentrics `[b₀, b₁, b₂]`: `P = b₀A + b₁B + b₂C`.
-    ///
-    /// # Precision
-    /// pbrt-v4 §6.8.5: the computed barycentrics are non-negative and sum to
-    /// `1 + σ` with `|σ| ≤ γ(4)`, which moves `P` off the triangle's plane by at most
-    /// `|σ|·|A·n̂| ≤ γ(4)·Σ|bᵢVᵢ|`; the three products and two sums add `γ(3)` per
-    /// component. The error bound is `γ(7)·(|b₀A| + |b₁B| + |b₂C|)`.
-    #[inline]
-    fn hit_at(&self, ray: &Ray<F>, t: F, [b0, b1, b2]: [F; 3]) -> Hit<F> {
-        let (pa, pb, pc) = (self.a * b0, self.b * b1, self.c * b2);
-        let point = pa + pb + pc;
-        let error = (pa.abs() + pb.abs() + pc.abs()) * F::gamma(7);
-        Hit::new(t, point, error, self.normal, ray.direction)
+    // 4. The scaled distance t·det, tested against (0, t_max) without dividing. An
+    // infinite t_max bounds nothing here (`∞·det` is NaN in double-double); step 5 still
+    // compares t with it.
+    let (az, bz, cz) = (a.z * sz, b.z * sz, c.z * sz);
+    let t_scaled = e0 * az + e1 * bz + e2 * cz;
+    let below_max = t_max == F::infinity()
+        || if det < zero {
+            t_scaled > t_max * det
+        } else {
+            t_scaled < t_max * det
+        };
+    let positive = if det < zero {
+        t_scaled < zero
+    } else {
+        t_scaled > zero
+    };
+    let in_range = positive && below_max;
+    if !in_range {
+        return None;
     }
+    let inv_det = F::one() / det;
+    let bary = [e0 * inv_det, e1 * inv_det, e2 * inv_det];
+    let t = t_scaled * inv_det;
+
+    // 5. pbrt-v4's conservative t > 0 (§6.8.4): bounds on the rounding of the
+    // transformed z (δz), x and y (δx, δy), the edge functions (δe) and t (δt).
+    let max3 = |p: F, q: F, r: F| p.abs().max(q.abs()).max(r.abs());
+    let max_z = max3(az, bz, cz);
+    let delta_z = F::gamma(3) * max_z;
+    let max_x = max3(ax, bx, cx);
+    let max_y = max3(ay, by, cy);
+    let delta_x = F::gamma(5) * (max_x + max_z);
+    let delta_y = F::gamma(5) * (max_y + max_z);
+    let two = F::one() + F::one();
+    let delta_e = two * (F::gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    let max_e = max3(e0, e1, e2);
+    let three = two + F::one();
+    let delta_t = three * (F::gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
+    // Written positively, so a NaN anywhere means "no hit".
+    (t > delta_t && t < t_max).then_some((t, bary))
+}
+
+/// The hit on the triangle of vertices `v` (unit normal `normal`) at `t` with barycentrics
+/// `[b₀, b₁, b₂]`: `P = b₀A + b₁B + b₂C`.
+///
+/// # Precision
+/// pbrt-v4 §6.8.5: the computed barycentrics are non-negative and sum to
+/// `1 + σ` with `|σ| ≤ γ(4)`, which moves `P` off the triangle's plane by at most
+/// `|σ|·|A·n̂| ≤ γ(4)·Σ|bᵢVᵢ|`; the three products and two sums add `γ(3)` per
+/// component. The error bound is `γ(7)·(|b₀A| + |b₁B| + |b₂C|)`.
+#[inline]
+pub(crate) fn record<F: Float>(
+    v: &[Vec3<F>; 3],
+    normal: Vec3<F>,
+    ray: &Ray<F>,
+    t: F,
+    [b0, b1, b2]: [F; 3],
+) -> Hit<F> {
+    let (pa, pb, pc) = (v[0] * b0, v[1] * b1, v[2] * b2);
+    let point = pa + pb + pc;
+    let error = (pa.abs() + pb.abs() + pc.abs()) * F::gamma(7);
+    Hit::new(t, point, error, normal, ray.direction)
+}
+
+/// The box of the vertices `v`, widened by one rounding of their magnitude.
+#[inline]
+pub(crate) fn vertex_bounds<F: Float>([a, b, c]: [Vec3<F>; 3]) -> Aabb<F> {
+    let lo = a.min(b).min(c);
+    let hi = a.max(b).max(c);
+    let pad = lo.abs().max(hi.abs()) * F::gamma(1);
+    Aabb::new(lo - pad, hi + pad)
 }
 
 /// Whether a product of two `F`s is exact in `f64` (at most 26 significant bits: `f32`),
 /// so the edge functions can be recomputed there with their exact sign.
 #[inline]
-fn products_exact_in_f64<F: Float>() -> bool {
+pub(super) fn products_exact_in_f64<F: Float>() -> bool {
     F::eps().to_f64() >= f64::EPSILON.sqrt()
 }
 
 impl<F: Float> Hittable<F> for Triangle<F> {
+    /// [`Triangle::intersect`], the barycentrics kept for the record;
+    /// [`Triangle4`](super::Triangle4) gives the same four triangles at a time.
     #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        let (t, bary) = self.intersect(ray, t_max)?;
-        Some(self.hit_at(ray, t, bary))
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        let (t, coords) = Triangle::intersect(self, ray, t_max)?;
+        Some(Intersection { t, part: 0, coords })
     }
 
     #[inline]
-    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        self.intersect(ray, t_max).is_some()
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        record(&self.vertices(), self.normal, ray, hit.t, hit.coords)
     }
 
-    /// The vertices' box, widened by one rounding of their magnitude.
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
-        let [a, b, c] = self.vertices();
-        let lo = a.min(b).min(c);
-        let hi = a.max(b).max(c);
-        let pad = lo.abs().max(hi.abs()) * F::gamma(1);
-        Some(Aabb::new(lo - pad, hi + pad))
+        Some(vertex_bounds(self.vertices()))
     }
 }
 

@@ -1,48 +1,60 @@
 //! The batch index against one-ray queries and the plain loop.
 
 use super::*;
-use crate::shape::{ShapeKind, Triangle};
+use crate::shape::{Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
 use crate::vec3::Vec3;
 
-/// `n` unit-spaced small spheres in a row, and a triangle after them if asked.
-fn objects(n: usize, triangle: bool) -> Vec<Object<ShapeKind<f32>, ()>> {
-    let mut objects: Vec<_> = (0..n)
-        .map(|i| Object {
-            shape: Sphere::new(Vec3::new(i as f32, 0.0, -5.0), 0.3).unwrap().into(),
-            material: (),
-        })
+/// `n` unit-spaced small spheres in a row, and after them, where asked, a triangle and a
+/// plane.
+fn objects(n: usize, others: bool) -> Vec<Object<ShapeKind<f32>, ()>> {
+    let mut shapes: Vec<ShapeKind<f32>> = (0..n)
+        .map(|i| Sphere::new(Vec3::new(i as f32, 0.0, -5.0), 0.3).unwrap().into())
         .collect();
-    if triangle {
+    if others {
         let v = |x: f32, y: f32| Vec3::new(x, y, -6.0);
-        objects.push(Object {
-            shape: Triangle::new(v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0))
+        shapes.push(
+            Triangle::new(v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0))
                 .unwrap()
                 .into(),
-            material: (),
-        });
+        );
+        shapes.push(Plane::new(v(0.0, -3.0), Vec3::new(0.0, 1.0, 0.0)).unwrap().into());
     }
-    objects
+    shapes
+        .into_iter()
+        .map(|shape| Object { shape, material: () })
+        .collect()
 }
 
-/// With spheres alone each leaf is one packet, lone spheres included (no singles in the
-/// tree); with another shape in the tree the leaves are groups.
+/// Every packet holds parts of one kind in key order; a leaf of one kind is one packet, a
+/// mixed leaf one packet per kind; the plane stays in the loop, alone in its packet.
 #[test]
-fn leaves_are_packets_only_when_the_tree_holds_spheres_alone() {
-    let index = Index::build(&objects(37, false), Acceleration::Bvh);
-    let bvh = index.bvh.as_ref().unwrap();
-    assert!(matches!(index.leaves, Leaves::Packets));
-    assert_eq!(index.in_tree.packets.len(), bvh.leaf_count());
-    assert!(index.in_tree.singles.is_empty() && index.in_tree.others.is_empty());
-    let index = Index::build(&objects(37, true), Acceleration::Bvh);
-    let Leaves::Groups(groups) = &index.leaves else {
-        panic!("a triangle in the tree needs groups");
-    };
-    assert_eq!(groups.len(), index.bvh.as_ref().unwrap().leaf_count());
-    assert_eq!(index.in_tree.others.len(), 1);
+fn leaves_hold_one_packet_per_kind() {
+    for others in [false, true] {
+        let objects = objects(40, others);
+        let index = Index::build(&objects, Acceleration::Bvh);
+        let bvh = index.bvh.as_ref().unwrap();
+        assert_eq!(index.leaves.len(), bvh.leaf_count() + 1);
+        let mut packets_in_tree = 0;
+        for k in 0..bvh.leaf_count() {
+            let kinds = bvh
+                .leaf(k)
+                .iter()
+                .map(|&i| usize::from(i as usize >= 40))
+                .collect::<std::collections::BTreeSet<_>>();
+            assert_eq!(index.leaf(k).len(), kinds.len(), "leaf {k}");
+            packets_in_tree += index.leaf(k).len();
+        }
+        assert_eq!(packets_in_tree + index.looped, index.packets.len());
+        assert_eq!(index.looped, usize::from(others), "the plane alone is looped");
+        for p in &index.packets {
+            let used: Vec<_> = p.keys().iter().filter(|k| k.0 != NONE).collect();
+            assert!(used.windows(2).all(|w| w[0] < w[1]), "lanes in key order");
+        }
+    }
 }
 
-/// Spheres of random sizes (each added twice, so that exact ties happen), triangles and
-/// a plane, through the plain loop and through a BVH.
+/// Spheres of random sizes (each added twice, so that exact ties happen), triangles, a
+/// mesh (added twice too) and a plane, through the plain loop and through a BVH.
 fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, u32>> {
     use crate::shape::Plane;
     use rand::{RngExt, SeedableRng};
@@ -61,7 +73,7 @@ fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, u32>> {
             shapes.push(Triangle::new(c + v(0.8), c + v(0.8), c + v(0.8)).unwrap().into());
         } else {
             let s: ShapeKind<f64> = Sphere::new(c, 0.05 + v(0.4).x.abs()).unwrap().into();
-            shapes.push(s);
+            shapes.push(s.clone());
             shapes.push(s);
         }
     }
@@ -71,6 +83,17 @@ fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, u32>> {
             .into(),
     );
     shapes.push(Sphere::new(Vec3::new(0.0, -1005.0, 0.0), 1000.0).unwrap().into());
+    if triangles {
+        // A ring of triangles around a shared centre: rays through shared edges and the
+        // centre meet several at once.
+        let (centre, ring) = (v(4.0), 12);
+        let mut vertices = vec![centre];
+        vertices.extend((0..ring).map(|_| centre + v(2.0)));
+        let faces = (0..ring).map(|i| [0, 1 + i, 1 + (i + 1) % ring]).collect();
+        let mesh: ShapeKind<f64> = Mesh::new(vertices, faces).unwrap().into();
+        shapes.push(mesh.clone());
+        shapes.push(mesh);
+    }
     shapes
         .into_iter()
         .enumerate()
@@ -129,5 +152,59 @@ fn a_batch_answers_like_single_rays() {
             hits += usize::from(want.is_some());
         }
         assert!(hits > rays.len() / 2, "most rays should hit something ({hits})");
+    }
+}
+
+/// The definition the index must give, bit for bit: every object's shape asked whole
+/// ([`Hittable::hit`]), the nearest kept, of equally near ones the first.
+fn naive_loop<S: Hittable<f64>, M: Copy>(objects: &[Object<S, M>], ray: &Ray<f64>) -> Option<(Hit<f64>, M)> {
+    let mut best: Option<(Hit<f64>, M)> = None;
+    for o in objects {
+        if let Some(h) = o.shape.hit(ray, f64::INFINITY)
+            && best.as_ref().is_none_or(|(b, _)| h.t < b.t)
+        {
+            best = Some((h, o.material));
+        }
+    }
+    best
+}
+
+/// The index, through the loop and through a BVH, answers as the naive loop over the
+/// objects does, ties and meshes included, and so does the occlusion query.
+#[test]
+fn the_index_is_the_naive_loop() {
+    use rand::{RngExt, SeedableRng};
+    for (seed, acceleration) in [(5, Acceleration::Linear), (6, Acceleration::Bvh)] {
+        let objects = mixed(seed, true);
+        let index = Index::build(&objects, acceleration);
+        let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed);
+        let mut v = |s: f64| {
+            Vec3::new(
+                rng.random_range(-s..s),
+                rng.random_range(-s..s),
+                rng.random_range(-s..s),
+            )
+        };
+        let mut hits = 0;
+        for _ in 0..4000 {
+            let Some(ray) = Ray::towards(v(9.0), v(5.0)) else {
+                continue;
+            };
+            let want = naive_loop(&objects, &ray);
+            let got = index
+                .hit(&objects, &ray, f64::INFINITY)
+                .map(|(h, o)| (h, o.material));
+            assert_eq!(got, want, "{ray:?}");
+            hits += usize::from(want.is_some());
+            for t_max in [1.0, 5.0, 12.0] {
+                let blocked = objects.iter().any(|o| o.shape.occluded(&ray, t_max));
+                assert_eq!(
+                    index.occluded(&objects, &ray, t_max),
+                    blocked,
+                    "{ray:?} to {t_max}"
+                );
+            }
+        }
+        assert!(hits > 2000, "most rays should hit something ({hits})");
     }
 }

@@ -1,0 +1,220 @@
+//! Packets of up to four parts of one kind, and the rule that keeps a ray's nearest hit.
+
+use super::super::Object;
+use crate::float::Float;
+use crate::lanes::{F4, LANES};
+use crate::ray::Ray;
+use crate::scene::layout::{Layout, Primitive};
+use crate::shape::{Intersection, Sphere, Sphere4, Triangle4};
+use crate::vec3::Vec3;
+
+/// A part of an object: `(object, part)`, both numbered as the scene holds them.
+pub(super) type Key = (u32, u32);
+
+/// The object of no part: an empty lane, or a ray's nearest when nothing was hit.
+pub(super) const NONE: u32 = u32::MAX;
+
+/// What a ray's nearest hit so far needs besides its `t` for the record: which part, and
+/// where on it. `object == NONE` while nothing is found.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Found<F> {
+    pub(super) key: Key,
+    pub(super) coords: [F; 3],
+}
+
+impl<F: Float> Found<F> {
+    /// Nothing found.
+    pub(super) fn none() -> Self {
+        Self {
+            key: (NONE, 0),
+            coords: [F::zero(); 3],
+        }
+    }
+
+    /// The intersection at `t` this describes, for [`Hittable::finish`].
+    pub(super) fn intersection(&self, t: F) -> Intersection<F> {
+        Intersection {
+            t,
+            part: self.key.1,
+            coords: self.coords,
+        }
+    }
+
+    /// Offers part `key`'s intersection at `t` to the ray's nearest `(nearest, self)`: it
+    /// takes its place if it is nearer, or as near and of a part that comes first (the
+    /// objects in the order added, a shape's parts in order). Whatever order the parts are
+    /// offered in, the nearest ends the same: the answer of a loop over all the parts.
+    #[inline(always)]
+    pub(super) fn offer(&mut self, nearest: &mut F, t: F, key: Key, coords: impl FnOnce() -> [F; 3]) -> bool {
+        if t < *nearest || (t == *nearest && key < self.key) {
+            *nearest = t;
+            *self = Self {
+                key,
+                coords: coords(),
+            };
+            return true;
+        }
+        false
+    }
+}
+
+/// Up to four parts of one kind, tested together; lanes hold parts in [`Key`] order and
+/// unused lanes the key `(NONE, 0)`.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Packet<F> {
+    lanes: Lanes<F>,
+    keys: [Key; LANES],
+}
+
+/// A packet's parts, as they are tested.
+#[derive(Clone, Copy, Debug)]
+enum Lanes<F> {
+    /// Spheres, in SIMD lanes.
+    Spheres(Sphere4<F>),
+    /// Triangles, in SIMD lanes.
+    Triangles(Triangle4<F>),
+    /// Other parts, each through its shape's [`Hittable::intersect_part`].
+    Others,
+}
+
+impl<F: Float> Packet<F> {
+    /// Offers each lane's intersection with `ray` (with no bound, so the answer cannot
+    /// depend on the order packets are visited in) to the ray's nearest.
+    #[inline(always)]
+    pub(super) fn offer<S: Layout<F>, M>(
+        &self,
+        objects: &[Object<S, M>],
+        ray: &Ray<F>,
+        nearest: &mut F,
+        found: &mut Found<F>,
+    ) -> bool {
+        match &self.lanes {
+            Lanes::Spheres(s) => self.offer_lanes(s.hits(ray), |_| [F::zero(); 3], nearest, found),
+            Lanes::Triangles(tri) => {
+                let hits = tri.hits(ray);
+                self.offer_lanes(hits.t, |lane| hits.coords(lane), nearest, found)
+            }
+            Lanes::Others => {
+                let mut changed = false;
+                for &(object, part) in self.keys.iter().take_while(|k| k.0 != NONE) {
+                    let shape = &objects[object as usize].shape;
+                    if let Some(i) = shape.intersect_part(part, ray, F::infinity()) {
+                        changed |= found.offer(nearest, i.t, (object, part), || i.coords);
+                    }
+                }
+                changed
+            }
+        }
+    }
+
+    /// Offers the nearest lane of `t` (`+∞` for a miss); of equally near lanes the first,
+    /// whose part comes first.
+    #[inline(always)]
+    fn offer_lanes(
+        &self,
+        t: F4<F>,
+        coords: impl Fn(usize) -> [F; 3],
+        nearest: &mut F,
+        found: &mut Found<F>,
+    ) -> bool {
+        let min = t.min_lane();
+        // Most packets hold nothing nearer: one comparison before a lane is looked up.
+        if !(min < F::infinity() && min <= *nearest) {
+            return false;
+        }
+        let lane = t.mask_eq(min).trailing_zeros() as usize;
+        found.offer(nearest, min, self.keys[lane], || coords(lane))
+    }
+
+    /// The lanes' parts.
+    #[cfg(test)]
+    pub(super) fn keys(&self) -> &[Key; LANES] {
+        &self.keys
+    }
+
+    /// Whether a lane's part blocks `ray` in `(0, t_max)`.
+    #[inline(always)]
+    pub(super) fn any<S: Layout<F>, M>(&self, objects: &[Object<S, M>], ray: &Ray<F>, t_max: F) -> bool {
+        match &self.lanes {
+            Lanes::Spheres(s) => s.any(ray, t_max),
+            Lanes::Triangles(t) => t.any(ray, t_max),
+            // Asked with no bound too, as the lanes are: the same answer on both paths.
+            Lanes::Others => self
+                .keys
+                .iter()
+                .take_while(|k| k.0 != NONE)
+                .any(|&(object, part)| {
+                    let shape = &objects[object as usize].shape;
+                    shape
+                        .intersect_part(part, ray, F::infinity())
+                        .is_some_and(|i| i.t < t_max)
+                }),
+        }
+    }
+}
+
+/// Packs parts into packets, with buffers kept from call to call.
+pub(super) struct Packer<F> {
+    spheres: Vec<(Key, Sphere<F>)>,
+    triangles: Vec<(Key, [Vec3<F>; 3])>,
+    others: Vec<Key>,
+}
+
+impl<F: Float> Packer<F> {
+    pub(super) fn new() -> Self {
+        Self {
+            spheres: Vec::new(),
+            triangles: Vec::new(),
+            others: Vec::new(),
+        }
+    }
+
+    /// Appends to `out` the packets of the parts `keys`: spheres, then triangles, then the
+    /// others, each kind four to a packet in key order (the order the lanes' tie needs).
+    pub(super) fn pack<S: Layout<F>, M>(
+        &mut self,
+        keys: &mut [Key],
+        objects: &[Object<S, M>],
+        out: &mut Vec<Packet<F>>,
+    ) {
+        keys.sort_unstable();
+        let (spheres, triangles, others) = (&mut self.spheres, &mut self.triangles, &mut self.others);
+        spheres.clear();
+        triangles.clear();
+        others.clear();
+        for &key in keys.iter() {
+            match objects[key.0 as usize].shape.primitive(key.1) {
+                Primitive::Sphere(s) => spheres.push((key, s)),
+                Primitive::Triangle(v) => triangles.push((key, v)),
+                Primitive::Other => others.push(key),
+            }
+        }
+        let keys_of = |chunk: &mut dyn Iterator<Item = Key>| {
+            let mut keys = [(NONE, 0); LANES];
+            for (lane, key) in chunk.enumerate() {
+                keys[lane] = key;
+            }
+            keys
+        };
+        for chunk in spheres.chunks(LANES) {
+            let shapes: Vec<Sphere<F>> = chunk.iter().map(|&(_, s)| s).collect();
+            out.push(Packet {
+                lanes: Lanes::Spheres(Sphere4::new(&shapes)),
+                keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
+            });
+        }
+        for chunk in triangles.chunks(LANES) {
+            let shapes: Vec<[Vec3<F>; 3]> = chunk.iter().map(|&(_, v)| v).collect();
+            out.push(Packet {
+                lanes: Lanes::Triangles(Triangle4::new(&shapes)),
+                keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
+            });
+        }
+        for chunk in others.chunks(LANES) {
+            out.push(Packet {
+                lanes: Lanes::Others,
+                keys: keys_of(&mut chunk.iter().copied()),
+            });
+        }
+    }
+}

@@ -1,0 +1,75 @@
+//! Which parts of a scene's shapes the scene may test four at a time.
+
+use crate::float::Float;
+use crate::shape::{Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
+use crate::vec3::Vec3;
+
+/// What a part of a shape is, as far as a scene's index can use it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Primitive<F> {
+    /// This sphere: tested four at a time in SIMD lanes.
+    Sphere(Sphere<F>),
+    /// The triangle with these vertices `[A, B, C]`: tested four at a time in SIMD lanes.
+    Triangle([Vec3<F>; 3]),
+    /// Anything else: tested on its own through [`Hittable::intersect_part`].
+    Other,
+}
+
+/// How a scene's shape type lays out for intersection: which of a shape's parts are
+/// spheres and triangles, which the scene then tests four at a time in SIMD lanes (each
+/// lane bit for bit that shape's own `intersect`) and records through
+/// [`Hittable::finish`] like any other part.
+///
+/// This is the scene's business, not the abstract object's: a trait object cannot say
+/// what it is, so [`DynScene`](crate::DynScene)'s shapes keep the default, and every part
+/// is tested through [`Hittable::intersect_part`]. A shape type of your own (an enum over
+/// the library's shapes and yours, say) needs an `impl`; the empty one,
+/// `impl<F: Float> Layout<F> for MyShape<F> {}`, is always correct, and forwarding the
+/// library's variants to [`ShapeKind`]'s keeps their fast path.
+pub trait Layout<F: Float>: Hittable<F> {
+    /// What part `part` of this shape is. A part described as a [`Primitive::Sphere`] or
+    /// [`Primitive::Triangle`] must intersect exactly as that sphere or triangle does:
+    /// the scene tests the description, and asks the shape only for the record.
+    #[inline]
+    fn primitive(&self, part: u32) -> Primitive<F> {
+        let _ = part;
+        Primitive::Other
+    }
+}
+
+impl<F: Float> Layout<F> for ShapeKind<F> {
+    #[inline]
+    fn primitive(&self, part: u32) -> Primitive<F> {
+        match self {
+            Self::Sphere(s) => s.primitive(part),
+            Self::Plane(p) => p.primitive(part),
+            Self::Triangle(t) => t.primitive(part),
+            Self::Mesh(m) => m.primitive(part),
+        }
+    }
+}
+
+impl<F: Float> Layout<F> for Sphere<F> {
+    #[inline]
+    fn primitive(&self, _: u32) -> Primitive<F> {
+        Primitive::Sphere(*self)
+    }
+}
+
+impl<F: Float> Layout<F> for Triangle<F> {
+    #[inline]
+    fn primitive(&self, _: u32) -> Primitive<F> {
+        Primitive::Triangle(self.vertices())
+    }
+}
+
+impl<F: Float> Layout<F> for Mesh<F> {
+    #[inline]
+    fn primitive(&self, part: u32) -> Primitive<F> {
+        Primitive::Triangle(self.triangle(part))
+    }
+}
+
+impl<F: Float> Layout<F> for Plane<F> {}
+
+impl<F: Float> Layout<F> for Box<dyn Hittable<F> + Send + Sync> {}

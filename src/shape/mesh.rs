@@ -1,0 +1,213 @@
+//! An indexed triangle mesh: vertices stored once, triangles as indices into them.
+
+use super::triangle::{checked_normal, intersect_vertices, record, unit_normal, vertex_bounds};
+use super::{Hit, Hittable, Intersection};
+use crate::aabb::Aabb;
+use crate::error::{Error, Result};
+use crate::float::Float;
+use crate::ray::Ray;
+use crate::vec3::Vec3;
+
+/// A triangle mesh: shared vertex positions and triangles indexing them, all of one
+/// material in a scene.
+///
+/// A scene indexes it by its triangles, its [parts](Hittable::parts): each enters the BVH
+/// on its own and is intersected exactly as a [`Triangle`](super::Triangle) with the same
+/// vertices (watertight across shared edges, the same error-bounded hit points), while
+/// each vertex is stored once instead of in every triangle around it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mesh<F> {
+    vertices: Vec<Vec3<F>>,
+    triangles: Vec<[u32; 3]>,
+    skipped: usize,
+}
+
+impl<F: Float> Mesh<F> {
+    /// The mesh of `triangles` (indices into `vertices`, counter-clockwise seen from the
+    /// front as for [`Triangle`](super::Triangle)).
+    ///
+    /// Triangles that are degenerate in `F` (see [`Triangle::new`](super::Triangle::new))
+    /// are left out and counted ([`Mesh::skipped_degenerate`]): rounding a mesh's vertices
+    /// to `F` can flatten a thin face, which a file's author cannot have meant as an error.
+    ///
+    /// # Errors
+    /// [`Error::InvalidValue`] (`what = "mesh"`), naming the element, for a vertex that is
+    /// not finite, an index past the vertices, more than `u32::MAX` triangles, or no
+    /// triangle left with area.
+    pub fn new(vertices: Vec<Vec3<F>>, mut triangles: Vec<[u32; 3]>) -> Result<Self> {
+        if let Some(k) = vertices.iter().position(|v| !v.is_finite()) {
+            let v = vertices[k];
+            return Err(Error::invalid("mesh", format!("vertex {k} is not finite: {v:?}")));
+        }
+        if let Some(k) = triangles
+            .iter()
+            .position(|t| t.iter().any(|&i| i as usize >= vertices.len()))
+        {
+            return Err(Error::invalid(
+                "mesh",
+                format!(
+                    "triangle {k} indexes a vertex past the {} vertices: {:?}",
+                    vertices.len(),
+                    triangles[k]
+                ),
+            ));
+        }
+        if u32::try_from(triangles.len()).is_err() {
+            return Err(Error::invalid(
+                "mesh",
+                format!("{} triangles; at most u32::MAX", triangles.len()),
+            ));
+        }
+        let before = triangles.len();
+        triangles.retain(|t| {
+            let [a, b, c] = t.map(|i| vertices[i as usize]);
+            unit_normal(a, b, c).is_ok()
+        });
+        if triangles.is_empty() {
+            return Err(Error::invalid(
+                "mesh",
+                format!("none of its {before} triangles has an area in {}", F::NAME),
+            ));
+        }
+        Ok(Self {
+            skipped: before - triangles.len(),
+            vertices,
+            triangles,
+        })
+    }
+
+    /// The vertex positions.
+    pub fn vertices(&self) -> &[Vec3<F>] {
+        &self.vertices
+    }
+
+    /// The triangles, as indices into [`Mesh::vertices`].
+    pub fn triangles(&self) -> &[[u32; 3]] {
+        &self.triangles
+    }
+
+    /// The vertices `[A, B, C]` of triangle `k`.
+    ///
+    /// # Panics
+    /// If `k` is not below the number of triangles.
+    #[inline]
+    pub fn triangle(&self, k: u32) -> [Vec3<F>; 3] {
+        self.triangles[k as usize].map(|i| self.vertices[i as usize])
+    }
+
+    /// The triangles [`Mesh::new`] left out for having no area in `F`.
+    pub fn skipped_degenerate(&self) -> usize {
+        self.skipped
+    }
+
+    /// This mesh in scalar `G`, rounded through `f64` and re-validated, as
+    /// [`EnumScene::cast`](crate::EnumScene::cast) explains (triangles degenerate in `G`
+    /// are left out, so a triangle's number may change).
+    pub fn cast<G: Float>(&self) -> Result<Mesh<G>> {
+        let mesh = Mesh::new(
+            self.vertices.iter().map(|v| v.cast()).collect(),
+            self.triangles.clone(),
+        )?;
+        Ok(Mesh {
+            skipped: mesh.skipped + self.skipped,
+            ..mesh
+        })
+    }
+}
+
+impl<F: Float> Hittable<F> for Mesh<F> {
+    /// The nearest of all the triangles (of equally near ones, the first), tested one by one:
+    /// for a mesh used alone. A scene tests only the triangles the ray's path through its
+    /// BVH leads to ([`Hittable::intersect_part`]).
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        let mut nearest: Option<Intersection<F>> = None;
+        for part in 0..self.parts() {
+            let bound = nearest.map_or(t_max, |n| n.t);
+            if let Some(i) = self.intersect_part(part, ray, bound) {
+                nearest = Some(i);
+            }
+        }
+        nearest
+    }
+
+    #[inline]
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        let v = self.triangle(hit.part);
+        record(&v, checked_normal(v), ray, hit.t, hit.coords)
+    }
+
+    fn bounds(&self) -> Option<Aabb<F>> {
+        (0..self.parts())
+            .filter_map(|k| self.part_bounds(k))
+            .reduce(Aabb::union)
+    }
+
+    #[inline]
+    fn parts(&self) -> u32 {
+        self.triangles.len() as u32
+    }
+
+    #[inline]
+    fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
+        Some(vertex_bounds(self.triangle(part)))
+    }
+
+    #[inline]
+    fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        let (t, coords) = intersect_vertices(&self.triangle(part), ray, t_max)?;
+        Some(Intersection { t, part, coords })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::Triangle;
+
+    /// A unit square in the plane `z = −2` as two triangles, and a stray vertex.
+    fn square() -> (Vec<Vec3<f64>>, Vec<[u32; 3]>) {
+        let v = |x, y| Vec3::new(x, y, -2.0);
+        (
+            vec![v(0.0, 0.0), v(1.0, 0.0), v(1.0, 1.0), v(0.0, 1.0), v(5.0, 5.0)],
+            vec![[0, 1, 2], [0, 2, 3]],
+        )
+    }
+
+    #[test]
+    fn triangles_are_the_triangle_shapes_bit_for_bit() {
+        let (vertices, triangles) = square();
+        let mesh = Mesh::new(vertices.clone(), triangles.clone()).unwrap();
+        let shapes: Vec<Triangle<f64>> = triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| vertices[i as usize]);
+                Triangle::new(a, b, c).unwrap()
+            })
+            .collect();
+        for (x, y) in [(0.7, 0.2), (0.2, 0.7), (0.5, 0.5), (0.1, 0.0), (0.95, 0.9)] {
+            let ray = Ray::new(Vec3::new(x, y, 0.0), Vec3::new(-0.05, 0.02, -1.0).normalize());
+            let got = mesh.hit(&ray, f64::INFINITY).unwrap();
+            let want = shapes.iter().filter_map(|s| s.hit(&ray, f64::INFINITY));
+            let want = want.reduce(|a, b| if b.t < a.t { b } else { a }).unwrap();
+            assert_eq!(got, want, "({x}, {y})");
+        }
+        assert_eq!(mesh.parts(), 2);
+        assert_eq!(mesh.part_bounds(1), shapes[1].bounds());
+    }
+
+    #[test]
+    fn degenerate_triangles_are_left_out_and_bad_input_is_an_error() {
+        let (vertices, mut triangles) = square();
+        triangles.push([0, 1, 1]);
+        triangles.push([0, 2, 0]);
+        let mesh = Mesh::new(vertices.clone(), triangles).unwrap();
+        assert_eq!((mesh.parts(), mesh.skipped_degenerate()), (2, 2));
+
+        let err = |v: Vec<Vec3<f64>>, t: Vec<[u32; 3]>| Mesh::new(v, t).unwrap_err().to_string();
+        assert!(err(vertices.clone(), vec![[0, 1, 9]]).contains("triangle 0 indexes a vertex past the 5"));
+        assert!(err(vertices.clone(), vec![[0, 1, 1]]).contains("none of its 1 triangles"));
+        let mut nan = vertices;
+        nan[2].y = f64::NAN;
+        assert!(err(nan, vec![[0, 1, 3]]).contains("vertex 2 is not finite"));
+    }
+}

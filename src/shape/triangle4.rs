@@ -1,0 +1,231 @@
+//! Four triangles side by side, intersected with one ray at once.
+
+use super::triangle::products_exact_in_f64;
+use crate::float::Float;
+use crate::lanes::{F4, LANES};
+use crate::ray::Ray;
+use crate::vec3::Vec3;
+
+/// Up to four triangles in structure-of-arrays layout (`vertices[v][axis].0[lane]`), so one
+/// ray is tested against all four with the same instructions per lane.
+///
+/// The answer is bit for bit what [`Triangle::intersect`](super::Triangle::intersect) gives
+/// for each triangle alone: the watertight test, operation for operation, on every lane.
+#[derive(Clone, Copy, Debug)]
+pub struct Triangle4<F> {
+    vertices: [[F4<F>; 3]; 3],
+}
+
+/// What [`Triangle4::hits`] finds: each lane's `t` (`+∞` for none) and what its
+/// barycentrics are made of.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TriangleHits<F> {
+    /// Each lane's `t`, or `+∞` where the ray misses that triangle.
+    pub(crate) t: F4<F>,
+    edges: [F4<F>; 3],
+    inv_det: F4<F>,
+}
+
+impl<F: Float> TriangleHits<F> {
+    /// The barycentrics of lane `lane`'s hit, as the scalar test computes them.
+    #[inline(always)]
+    pub(crate) fn coords(&self, lane: usize) -> [F; 3] {
+        self.edges.map(|e| e.0[lane] * self.inv_det.0[lane])
+    }
+}
+
+impl<F: Float> Triangle4<F> {
+    /// The first (up to) four of `triangles`, each given by its vertices `[A, B, C]`;
+    /// unused lanes are degenerate (all vertices at the origin) and never hit.
+    pub fn new(triangles: &[[Vec3<F>; 3]]) -> Self {
+        let mut p = Self {
+            vertices: [[F4::splat(F::zero()); 3]; 3],
+        };
+        for (lane, t) in triangles.iter().take(LANES).enumerate() {
+            for (v, vertex) in t.iter().enumerate() {
+                for axis in 0..3 {
+                    p.vertices[v][axis].0[lane] = vertex[axis];
+                }
+            }
+        }
+        p
+    }
+
+    /// Whether any lane's triangle is hit at some `t` in `(0, t_max)`.
+    #[inline(always)]
+    pub fn any(&self, ray: &Ray<F>, t_max: F) -> bool {
+        self.hits(ray).t.any_lt(t_max)
+    }
+
+    /// For each lane, the `t` that [`Triangle::intersect`](super::Triangle::intersect)
+    /// reports with no bound (`t_max = +∞`), or `+∞` where it reports none, with what the
+    /// barycentrics are made of. The steps are the scalar test's, numbered as there.
+    /// Packets whose lanes all fail the edge test stop there.
+    #[inline(always)]
+    pub(crate) fn hits(&self, ray: &Ray<F>) -> TriangleHits<F> {
+        let inf = F4::splat(F::infinity());
+        let zero = F::zero();
+        // 1. The permutation depends on the ray alone, so every lane takes the same one.
+        let ad = ray.direction.abs();
+        let kz = if ad.x > ad.y {
+            if ad.x > ad.z { 0 } else { 2 }
+        } else if ad.y > ad.z {
+            1
+        } else {
+            2
+        };
+        let kx = if kz == 2 { 0 } else { kz + 1 };
+        let ky = if kx == 2 { 0 } else { kx + 1 };
+        let (o, d) = (ray.origin, ray.direction);
+        let moved = |v: usize, axis: usize| self.vertices[v][axis] - F4::splat(o[axis]);
+        // 2. Shear x and y.
+        let (sx, sy, sz) = (-d[kx] / d[kz], -d[ky] / d[kz], F::one() / d[kz]);
+        let sheared = |v: usize| {
+            let z = moved(v, kz);
+            (
+                moved(v, kx) + F4::splat(sx) * z,
+                moved(v, ky) + F4::splat(sy) * z,
+                z,
+            )
+        };
+        let ((ax, ay, a_z), (bx, by, b_z), (cx, cy, c_z)) = (sheared(0), sheared(1), sheared(2));
+        // 3. Edge functions, recomputed in f64 for a lane where one is zero in f32.
+        let mut e0 = bx * cy - by * cx;
+        let mut e1 = cx * ay - cy * ax;
+        let mut e2 = ax * by - ay * bx;
+        if products_exact_in_f64::<F>()
+            && F4::<F>::any(|k| e0.0[k] == zero || e1.0[k] == zero || e2.0[k] == zero)
+        {
+            for k in 0..LANES {
+                if e0.0[k] == zero || e1.0[k] == zero || e2.0[k] == zero {
+                    let edge = |px: F4<F>, py: F4<F>, qx: F4<F>, qy: F4<F>| {
+                        F::from_f64(px.0[k].to_f64() * qy.0[k].to_f64() - py.0[k].to_f64() * qx.0[k].to_f64())
+                    };
+                    (e0.0[k], e1.0[k], e2.0[k]) =
+                        (edge(bx, by, cx, cy), edge(cx, cy, ax, ay), edge(ax, ay, bx, by));
+                }
+            }
+        }
+        let det = e0 + e1 + e2;
+        let edges_pass = |k: usize| {
+            let (p, q, r) = (e0.0[k], e1.0[k], e2.0[k]);
+            !((p < zero || q < zero || r < zero) && (p > zero || q > zero || r > zero)) && det.0[k] != zero
+        };
+        if !F4::<F>::any(edges_pass) {
+            return TriangleHits {
+                t: inf,
+                edges: [e0, e1, e2],
+                inv_det: det,
+            };
+        }
+        // 4. The scaled distance, of the sign of `det` (an infinite bound bounds nothing).
+        let s = F4::splat(sz);
+        let (az, bz, cz) = (a_z * s, b_z * s, c_z * s);
+        let t_scaled = e0 * az + e1 * bz + e2 * cz;
+        let in_range = |k: usize| {
+            let ts = t_scaled.0[k];
+            if det.0[k] < zero { ts < zero } else { ts > zero }
+        };
+        let inv_det = F4::splat(F::one()) / det;
+        let t = t_scaled * inv_det;
+        // 5. The conservative t > 0 of pbrt-v4 (§6.8.4).
+        let max3 = |p: F4<F>, q: F4<F>, r: F4<F>| p.abs().max(q.abs()).max(r.abs());
+        let gamma = |n: u32| F4::splat(F::gamma(n));
+        let max_z = max3(az, bz, cz);
+        let delta_z = gamma(3) * max_z;
+        let (max_x, max_y) = (max3(ax, bx, cx), max3(ay, by, cy));
+        let delta_x = gamma(5) * (max_x + max_z);
+        let delta_y = gamma(5) * (max_y + max_z);
+        let two = F::one() + F::one();
+        let delta_e = F4::splat(two) * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        let max_e = max3(e0, e1, e2);
+        let three = F4::splat(two + F::one());
+        let delta_t = three * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
+        let hit = |k: usize| edges_pass(k) && in_range(k) && t.0[k] > delta_t.0[k] && t.0[k] < F::infinity();
+        TriangleHits {
+            t: F4::select(hit, t, inf),
+            edges: [e0, e1, e2],
+            inv_det,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::Triangle;
+    use rand::{RngExt, SeedableRng};
+
+    /// Every lane agrees bit for bit with the scalar triangle's `t` and barycentrics, for
+    /// triangles of very different sizes and distances, rays through their edges and
+    /// vertices included (where f32 falls back to f64 edge functions).
+    fn lanes_match_the_scalar_triangle<F: Float>() {
+        let mut rng = rand::rngs::Xoshiro256PlusPlus::seed_from_u64(4);
+        let mut hits = 0;
+        for round in 0..4_000 {
+            let scale = 10f64.powi(rng.random_range(-3..6));
+            let mut point = || {
+                Vec3::<F>::from_f64(
+                    rng.random_range(-2.0..2.0) * scale,
+                    rng.random_range(-2.0..2.0) * scale,
+                    rng.random_range(-2.0..2.0) * scale,
+                )
+            };
+            // Some packets share vertices, as a mesh's triangles do.
+            let shared = [point(), point()];
+            let triangles: Vec<Triangle<F>> = (0..4)
+                .filter_map(|i| {
+                    let c = point();
+                    if round % 2 == 0 && i % 2 == 0 {
+                        Triangle::new(shared[0], shared[1], c).ok()
+                    } else {
+                        Triangle::new(point(), point(), c).ok()
+                    }
+                })
+                .collect();
+            if triangles.is_empty() {
+                continue;
+            }
+            let packet = Triangle4::new(&triangles.iter().map(|t| t.vertices()).collect::<Vec<_>>());
+            let origin = point();
+            // Aim at a vertex, an edge's midpoint, or inside.
+            let [a, b, c] = triangles[round % triangles.len()].vertices();
+            let half = crate::float::lit::<F>(0.5);
+            let target = match round % 3 {
+                0 => a,
+                1 => (a + b) * half,
+                _ => (a + b + c) * crate::float::lit::<F>(1.0 / 3.0),
+            };
+            let Some(ray) = Ray::towards(origin, target) else {
+                continue;
+            };
+            let got = packet.hits(&ray);
+            for (lane, tri) in triangles.iter().enumerate() {
+                let want = tri.intersect(&ray, F::infinity());
+                let t = got.t.0[lane];
+                match want {
+                    Some((wt, coords)) => {
+                        hits += 1;
+                        assert_eq!(t.to_f64().to_bits(), wt.to_f64().to_bits(), "{ray:?}");
+                        let same = |x: [F; 3]| x.map(|c| c.to_f64().to_bits());
+                        assert_eq!(same(got.coords(lane)), same(coords), "{ray:?}");
+                    }
+                    None => assert_eq!(t, F::infinity(), "{ray:?}"),
+                }
+            }
+            for &t in &got.t.0[triangles.len()..] {
+                assert_eq!(t, F::infinity(), "empty lanes are never hit");
+            }
+        }
+        assert!(hits > 1_000, "{}: only {hits} hits tested", F::NAME);
+    }
+
+    mod scalars {
+        crate::float::for_each_scalar!(lanes_match_the_scalar_triangle);
+    }
+
+    #[test]
+    fn lanes_match_the_scalar_triangle_double_double() {
+        lanes_match_the_scalar_triangle::<crate::DoubleDouble>();
+    }
+}
