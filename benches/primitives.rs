@@ -59,7 +59,7 @@ fn sphere<F: Float>(c: &mut Criterion) {
     let four: Vec<Sphere<F>> = (0..4)
         .map(|i| Sphere::new(Vec3::from_f64(f64::from(i) - 1.5, 0.0, -4.0), lit(0.6)).unwrap())
         .collect();
-    let packet = Sphere4::new(&four);
+    let packet = Sphere4::new(four.iter().copied());
     g.bench_function(BenchmarkId::new(F::NAME, "4-spheres-one-by-one"), |b| {
         b.iter(|| {
             rays.iter()

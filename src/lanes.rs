@@ -51,10 +51,10 @@ impl<F: Float> F4<F> {
         self.zip(o, F::max)
     }
 
-    /// Per lane: `if mask(k) { x } else { y }`.
+    /// Per lane: `x` where bit `k` of `mask` is set, else `y`.
     #[inline(always)]
-    pub fn select(mask: impl Fn(usize) -> bool, x: Self, y: Self) -> Self {
-        let sel = |k: usize| if mask(k) { x.0[k] } else { y.0[k] };
+    pub fn select(mask: u32, x: Self, y: Self) -> Self {
+        let sel = |k: usize| if mask & (1 << k) != 0 { x.0[k] } else { y.0[k] };
         Self([sel(0), sel(1), sel(2), sel(3)])
     }
 
@@ -96,12 +96,6 @@ impl<F: Float> F4<F> {
         test(0) & test(1) & test(2) & test(3)
     }
 
-    /// Whether `test(k)` holds in some lane (see [`F4::all`] for the form).
-    #[inline(always)]
-    pub fn any(test: impl Fn(usize) -> bool) -> bool {
-        test(0) | test(1) | test(2) | test(3)
-    }
-
     /// Whether some lane is `< bound` (see [`F4::all`] for the form).
     #[inline(always)]
     pub fn any_lt(self, bound: F) -> bool {
@@ -114,6 +108,13 @@ impl<F: Float> F4<F> {
     pub fn mask_eq(self, v: F) -> u32 {
         let [a, b, c, d] = self.0.map(|x| u32::from(x == v));
         a | (b << 1) | (c << 2) | (d << 3)
+    }
+
+    /// Bit `k` set where lane `k` of `a` is `<` lane `k` of `b` (never for NaN).
+    #[inline(always)]
+    pub fn mask_lt(a: Self, b: Self) -> u32 {
+        let m = |k: usize| u32::from(a.0[k] < b.0[k]) << k;
+        m(0) | m(1) | m(2) | m(3)
     }
 
     /// Bit `k` set where lane `k` of `a` is `<= ` lane `k` of `b`.
@@ -183,6 +184,8 @@ mod tests {
         assert!(!F4::<f32>::all(|k| a.0[k] < 4.0));
         assert_eq!(F4([1.0f32, 3.0, 2.0, 3.0]).mask_eq(3.0), 0b1010);
         assert_eq!(F4::mask_le(a, b), 0b0011, "NaN <= x is false");
+        assert_eq!(F4::mask_lt(a, b), 0b0011, "NaN < x is false");
+        assert_eq!(F4::select(0b0101, a, b).0[..3], [1.0, 2.0, 4.0]);
         assert_eq!(a.min_lane(), -2.0);
         assert_eq!(F4([5.0f64, 3.0, 4.0, 3.0]).min_lane(), 3.0);
         assert!(F4([-1.0f64, 4.0, 0.0, 9.0]).sqrt().0[0].is_nan());

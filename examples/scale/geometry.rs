@@ -111,10 +111,8 @@ impl Geometry {
                 }
             }
             Self::Mesh { vertices, triangles } => {
-                for t in triangles {
-                    let [a, b, c] = t.map(|i| v(vertices[i as usize]));
-                    scene.add(Triangle::new(a, b, c)?, matte);
-                }
+                let vertices = vertices.iter().map(|&p| v(p)).collect();
+                scene.add(Mesh::new(vertices, triangles.clone())?, matte);
             }
         }
         Ok(scene)

@@ -3,7 +3,7 @@
 use super::Sphere;
 use crate::float::Float;
 use crate::lanes::F4;
-pub(crate) use crate::lanes::LANES;
+use crate::lanes::LANES;
 use crate::ray::Ray;
 
 /// Up to four spheres in structure-of-arrays layout (`cx[lane]`, `cy[lane]`, …), so one ray
@@ -24,14 +24,14 @@ pub struct Sphere4<F> {
 
 impl<F: Float> Sphere4<F> {
     /// The first (up to) four of `spheres`; unused lanes are empty and never hit.
-    pub fn new(spheres: &[Sphere<F>]) -> Self {
+    pub fn new(spheres: impl IntoIterator<Item = Sphere<F>>) -> Self {
         let mut p = Self {
             cx: F4::splat(F::zero()),
             cy: F4::splat(F::zero()),
             cz: F4::splat(F::zero()),
             r2: F4::splat(-F::one()),
         };
-        for (lane, s) in spheres.iter().take(LANES).enumerate() {
+        for (lane, s) in spheres.into_iter().take(LANES).enumerate() {
             let c = s.center();
             (p.cx.0[lane], p.cy.0[lane], p.cz.0[lane]) = (c.x, c.y, c.z);
             p.r2.0[lane] = s.radius() * s.radius();
@@ -113,7 +113,7 @@ mod tests {
                     Sphere::new(c, crate::float::lit(rng.random_range(0.01..1.5) * scale)).unwrap()
                 })
                 .collect();
-            let packet = Sphere4::new(&spheres);
+            let packet = Sphere4::new(spheres.iter().copied());
             let o = Vec3::from_f64(
                 rng.random_range(-3.0..3.0) * scale,
                 rng.random_range(-3.0..3.0) * scale,

@@ -37,11 +37,11 @@ impl<F: Float> TriangleHits<F> {
 impl<F: Float> Triangle4<F> {
     /// The first (up to) four of `triangles`, each given by its vertices `[A, B, C]`;
     /// unused lanes are degenerate (all vertices at the origin) and never hit.
-    pub fn new(triangles: &[[Vec3<F>; 3]]) -> Self {
+    pub fn new(triangles: impl IntoIterator<Item = [Vec3<F>; 3]>) -> Self {
         let mut p = Self {
             vertices: [[F4::splat(F::zero()); 3]; 3],
         };
-        for (lane, t) in triangles.iter().take(LANES).enumerate() {
+        for (lane, t) in triangles.into_iter().take(LANES).enumerate() {
             for (v, vertex) in t.iter().enumerate() {
                 for axis in 0..3 {
                     p.vertices[v][axis].0[lane] = vertex[axis];
@@ -93,39 +93,36 @@ impl<F: Float> Triangle4<F> {
         let mut e0 = bx * cy - by * cx;
         let mut e1 = cx * ay - cy * ax;
         let mut e2 = ax * by - ay * bx;
-        if products_exact_in_f64::<F>()
-            && F4::<F>::any(|k| e0.0[k] == zero || e1.0[k] == zero || e2.0[k] == zero)
-        {
-            for k in 0..LANES {
-                if e0.0[k] == zero || e1.0[k] == zero || e2.0[k] == zero {
-                    let edge = |px: F4<F>, py: F4<F>, qx: F4<F>, qy: F4<F>| {
-                        F::from_f64(px.0[k].to_f64() * qy.0[k].to_f64() - py.0[k].to_f64() * qx.0[k].to_f64())
-                    };
-                    (e0.0[k], e1.0[k], e2.0[k]) =
-                        (edge(bx, by, cx, cy), edge(cx, cy, ax, ay), edge(ax, ay, bx, by));
-                }
+        let z = F4::splat(zero);
+        let zeros = e0.mask_eq(zero) | e1.mask_eq(zero) | e2.mask_eq(zero);
+        if products_exact_in_f64::<F>() && zeros != 0 {
+            for k in (0..LANES).filter(|k| zeros & (1 << k) != 0) {
+                let edge = |px: F4<F>, py: F4<F>, qx: F4<F>, qy: F4<F>| {
+                    F::from_f64(px.0[k].to_f64() * qy.0[k].to_f64() - py.0[k].to_f64() * qx.0[k].to_f64())
+                };
+                (e0.0[k], e1.0[k], e2.0[k]) =
+                    (edge(bx, by, cx, cy), edge(cx, cy, ax, ay), edge(ax, ay, bx, by));
             }
         }
+        // Lanes as bit masks: no edge function of each sign, and a determinant that is not 0.
+        let negative = F4::mask_lt(e0, z) | F4::mask_lt(e1, z) | F4::mask_lt(e2, z);
+        let positive = F4::mask_lt(z, e0) | F4::mask_lt(z, e1) | F4::mask_lt(z, e2);
         let det = e0 + e1 + e2;
-        let edges_pass = |k: usize| {
-            let (p, q, r) = (e0.0[k], e1.0[k], e2.0[k]);
-            !((p < zero || q < zero || r < zero) && (p > zero || q > zero || r > zero)) && det.0[k] != zero
+        let edges_pass = !(negative & positive) & !det.mask_eq(zero) & 0b1111;
+        let miss = TriangleHits {
+            t: inf,
+            edges: [e0, e1, e2],
+            inv_det: det,
         };
-        if !F4::<F>::any(edges_pass) {
-            return TriangleHits {
-                t: inf,
-                edges: [e0, e1, e2],
-                inv_det: det,
-            };
+        if edges_pass == 0 {
+            return miss;
         }
         // 4. The scaled distance, of the sign of `det` (an infinite bound bounds nothing).
         let s = F4::splat(sz);
         let (az, bz, cz) = (a_z * s, b_z * s, c_z * s);
         let t_scaled = e0 * az + e1 * bz + e2 * cz;
-        let in_range = |k: usize| {
-            let ts = t_scaled.0[k];
-            if det.0[k] < zero { ts < zero } else { ts > zero }
-        };
+        let det_negative = F4::mask_lt(det, z);
+        let in_range = (det_negative & F4::mask_lt(t_scaled, z)) | (!det_negative & F4::mask_lt(z, t_scaled));
         let inv_det = F4::splat(F::one()) / det;
         let t = t_scaled * inv_det;
         // 5. The conservative t > 0 of pbrt-v4 (§6.8.4).
@@ -141,7 +138,7 @@ impl<F: Float> Triangle4<F> {
         let max_e = max3(e0, e1, e2);
         let three = F4::splat(two + F::one());
         let delta_t = three * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
-        let hit = |k: usize| edges_pass(k) && in_range(k) && t.0[k] > delta_t.0[k] && t.0[k] < F::infinity();
+        let hit = edges_pass & in_range & F4::mask_lt(delta_t, t) & F4::mask_lt(t, inf);
         TriangleHits {
             t: F4::select(hit, t, inf),
             edges: [e0, e1, e2],
@@ -186,7 +183,7 @@ mod tests {
             if triangles.is_empty() {
                 continue;
             }
-            let packet = Triangle4::new(&triangles.iter().map(|t| t.vertices()).collect::<Vec<_>>());
+            let packet = Triangle4::new(triangles.iter().map(|t| t.vertices()));
             let origin = point();
             // Aim at a vertex, an edge's midpoint, or inside.
             let [a, b, c] = triangles[round % triangles.len()].vertices();

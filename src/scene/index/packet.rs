@@ -197,16 +197,14 @@ impl<F: Float> Packer<F> {
             keys
         };
         for chunk in spheres.chunks(LANES) {
-            let shapes: Vec<Sphere<F>> = chunk.iter().map(|&(_, s)| s).collect();
             out.push(Packet {
-                lanes: Lanes::Spheres(Sphere4::new(&shapes)),
+                lanes: Lanes::Spheres(Sphere4::new(chunk.iter().map(|&(_, s)| s))),
                 keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
             });
         }
         for chunk in triangles.chunks(LANES) {
-            let shapes: Vec<[Vec3<F>; 3]> = chunk.iter().map(|&(_, v)| v).collect();
             out.push(Packet {
-                lanes: Lanes::Triangles(Triangle4::new(&shapes)),
+                lanes: Lanes::Triangles(Triangle4::new(chunk.iter().map(|&(_, v)| v))),
                 keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
             });
         }
