@@ -37,7 +37,7 @@ fn build(c: &mut Criterion) {
                 .unwrap();
             let id = BenchmarkId::new(format!("f32/spheres/{threads}-thread"), n);
             g.bench_function(id, |b| {
-                b.iter(|| pool.install(|| Bvh::build(black_box(&boxes)).node_count()))
+                b.iter(|| pool.install(|| Bvh::build(black_box(&boxes).iter().copied()).node_count()))
             });
         }
     }

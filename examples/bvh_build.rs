@@ -68,7 +68,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .num_threads(args.threads)
         .build()?;
     let start = Instant::now();
-    let bvh = pool.install(|| Bvh::build(&boxes));
+    let bvh = pool.install(|| Bvh::build(boxes.iter().copied()));
     let seconds = start.elapsed().as_secs_f64();
     print!(
         "{} boxes, {} threads: {seconds:.4} s, {} nodes, {} leaves, SAH cost {:.4}",

@@ -266,7 +266,7 @@ mod tests {
             );
             // Eight copies, so the root is a wide node that tests the box (a lone leaf
             // would be visited untested).
-            let bvh = crate::bvh::Bvh::build(&[b; 8]);
+            let bvh = crate::bvh::Bvh::build([b; 8]);
             let mut entered = false;
             bvh.traverse(&ray, f32::INFINITY, |_, _| {
                 entered = true;

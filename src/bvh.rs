@@ -39,7 +39,10 @@ struct Node<F> {
 /// A bounding volume hierarchy over primitives `0..n` given by their boxes.
 #[derive(Clone, Debug)]
 pub struct Bvh<F> {
-    nodes: Vec<Node<F>>,
+    /// The binary tree's node count and SAH cost, for reports (the tree itself is dropped
+    /// once collapsed into `wide`).
+    node_count: usize,
+    sah_cost: f64,
     indices: Vec<u32>,
     /// Leaf `k` holds `indices[leaves[k].0..leaves[k].1]`.
     leaves: Vec<(u32, u32)>,
@@ -55,15 +58,26 @@ pub struct Bvh<F> {
 }
 
 impl<F: Float> Bvh<F> {
-    /// Builds the hierarchy over `bounds[i]`, the box of primitive `i`.
+    /// Builds the hierarchy over the primitives whose boxes `bounds` yields: primitive `i`
+    /// is the `i`-th.
     ///
     /// # Panics
     /// With more than `u32::MAX` primitives.
-    pub fn build(bounds: &[Aabb<F>]) -> Self {
-        u32::try_from(bounds.len()).expect("a BVH holds at most u32::MAX primitives");
-        let (nodes, indices, leaves) = build::build(bounds);
+    pub fn build(bounds: impl IntoIterator<Item = Aabb<F>>) -> Self {
+        Self::build_classes(bounds.into_iter().map(|b| (b, 0)))
+    }
+
+    /// [`Bvh::build`] over primitives given as `(box, class)`, where no leaf holds two
+    /// classes: a scene gives each kind of shape a class, so that a leaf is tested one way.
+    ///
+    /// # Panics
+    /// With more than `u32::MAX` primitives.
+    pub fn build_classes(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) -> Self {
+        let (nodes, indices, leaves) = build::build(prims);
+        u32::try_from(indices.len()).expect("a BVH holds at most u32::MAX primitives");
         let mut bvh = Self {
-            nodes,
+            node_count: nodes.len(),
+            sah_cost: sah_cost(&nodes),
             indices,
             leaves,
             wide: Vec::new(),
@@ -71,12 +85,13 @@ impl<F: Float> Bvh<F> {
             orders: Vec::new(),
             wide_depth: 0,
         };
-        if let Some(root) = bvh.nodes.first() {
+        if let Some(root) = nodes.first() {
             bvh.root = Some(if root.count > 0 {
                 Child::Leaf(root.offset)
             } else {
-                Child::Node(wide::collapse(&bvh.nodes, 0, &mut bvh.wide))
+                Child::Node(wide::collapse(&nodes, 0, &mut bvh.wide))
             });
+            bvh.wide.shrink_to_fit();
             bvh.wide_depth = wide::depth(&bvh.wide, bvh.root);
             bvh.orders = bvh.wide.par_iter().map(Wide::orders).collect();
         }
@@ -85,30 +100,14 @@ impl<F: Float> Bvh<F> {
 
     /// Number of nodes of the binary tree (for tests and reports).
     pub fn node_count(&self) -> usize {
-        self.nodes.len()
+        self.node_count
     }
 
     /// The tree's surface-area-heuristic cost in the build's units (for tests and
     /// reports): `Σ C_t·A(n)/A(root)` over interior nodes plus `Σ ⌈N/4⌉·A(l)/A(root)` over
     /// leaves, with the build's node-visit cost `C_t` = ½; 0 for an empty tree. Lower is better.
     pub fn sah_cost(&self) -> f64 {
-        let area = |n: &Node<F>| Aabb::new(n.bounds[0], n.bounds[1]).surface_area().to_f64();
-        let Some(root) = self.nodes.first() else {
-            return 0.0;
-        };
-        let total = self
-            .nodes
-            .iter()
-            .map(|n| {
-                let weight = if n.count > 0 {
-                    (n.count as usize).div_ceil(MAX_LEAF) as f64
-                } else {
-                    TRAVERSAL_COST
-                };
-                weight * area(n)
-            })
-            .sum::<f64>();
-        total / area(root).max(f64::MIN_POSITIVE)
+        self.sah_cost
     }
 
     /// Number of leaves; the traversal's callbacks receive leaf numbers `0..leaf_count()`.
@@ -181,6 +180,26 @@ impl<F: Float> Bvh<F> {
     }
 }
 
+/// [`Bvh::sah_cost`] of the binary tree `nodes`.
+fn sah_cost<F: Float>(nodes: &[Node<F>]) -> f64 {
+    let area = |n: &Node<F>| Aabb::new(n.bounds[0], n.bounds[1]).surface_area().to_f64();
+    let Some(root) = nodes.first() else {
+        return 0.0;
+    };
+    let total = nodes
+        .iter()
+        .map(|n| {
+            let weight = if n.count > 0 {
+                (n.count as usize).div_ceil(MAX_LEAF) as f64
+            } else {
+                TRAVERSAL_COST
+            };
+            weight * area(n)
+        })
+        .sum::<f64>();
+    total / area(root).max(f64::MIN_POSITIVE)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -217,7 +236,7 @@ mod tests {
                 Aabb::new(c - Vec3::splat(0.3), c + Vec3::splat(rng.random_range(0.01..0.6)))
             })
             .collect();
-        let bvh = Bvh::build(&boxes);
+        let bvh = Bvh::build(boxes.iter().copied());
         assert!(bvh.node_count() < 2 * boxes.len());
         for _ in 0..2000 {
             let o = Vec3::new(
@@ -255,7 +274,7 @@ mod tests {
                 Aabb::new(c, c + Vec3::splat(0.5))
             })
             .collect();
-        let bvh = Bvh::build(&boxes);
+        let bvh = Bvh::build(boxes.iter().copied());
         for x in [0.0f32, 0.25, 0.5, 1.0, 2.5] {
             for y in [0.0f32, 0.5, 1.0, 3.5] {
                 for d in [
@@ -294,24 +313,45 @@ mod tests {
         let boxes = random_boxes(100_000, 7);
         let on = |threads: usize| {
             let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build();
-            pool.expect("a thread pool").install(|| Bvh::build(&boxes))
+            pool.expect("a thread pool")
+                .install(|| Bvh::build(boxes.iter().copied()))
         };
         let one = on(1);
         for threads in [2, 3] {
             let other = on(threads);
-            assert!(one.nodes == other.nodes, "nodes on {threads} threads");
+            assert_eq!(one.node_count, other.node_count, "nodes on {threads} threads");
             assert_eq!(one.leaves, other.leaves, "leaves on {threads} threads");
             assert_eq!(one.indices, other.indices, "primitives on {threads} threads");
             assert_eq!(format!("{one:?}"), format!("{other:?}"), "{threads} threads");
         }
     }
 
+    /// No leaf mixes classes, even where boxes of both classes overlap exactly.
+    #[test]
+    fn leaves_hold_one_class() {
+        let boxes = random_boxes(2_000, 3);
+        let class = |i: usize| (i % 3) as u8;
+        let prims = boxes
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &b)| [(b, class(i)), (b, class(i + 1))]);
+        let bvh = Bvh::build_classes(prims);
+        for k in 0..bvh.leaf_count() {
+            let classes: Vec<u8> = bvh
+                .leaf(k)
+                .iter()
+                .map(|&p| class(p as usize / 2 + p as usize % 2))
+                .collect();
+            assert!(classes.windows(2).all(|w| w[0] == w[1]), "leaf {k}: {classes:?}");
+        }
+    }
+
     #[test]
     fn empty_and_single() {
-        let none = Bvh::<f32>::build(&[]);
+        let none = Bvh::<f32>::build([]);
         let ray = Ray::new(Vec3::zero(), Vec3::new(0.0, 0.0, -1.0));
         assert!(!none.any(&ray, f32::INFINITY, |_| true));
-        let one = Bvh::build(&[Aabb::new(Vec3::new(-1.0, -1.0, -3.0), Vec3::new(1.0, 1.0, -2.0))]);
+        let one = Bvh::build([Aabb::new(Vec3::new(-1.0, -1.0, -3.0), Vec3::new(1.0, 1.0, -2.0))]);
         assert_eq!((one.leaf_count(), one.leaf(0)), (1, &[0u32][..]));
         assert!(one.any(&ray, f32::INFINITY, |k| k == 0));
     }

@@ -29,15 +29,17 @@ const CHUNK: usize = 1 << 13;
 /// A binary tree's `(nodes, indices, leaves)` as [`super::Bvh`] stores them.
 pub(super) type Arrays<F> = (Vec<Node<F>>, Vec<u32>, Vec<(u32, u32)>);
 
-/// The binary tree over primitives `0..bounds.len()` (empty for none).
-pub(super) fn build<F: Float>(bounds: &[Aabb<F>]) -> Arrays<F> {
-    let mut items: Vec<Item<F>> = bounds
-        .par_iter()
+/// The binary tree over the primitives that `prims` yields as `(box, class)`, numbered in
+/// that order (empty for none); no leaf holds two classes.
+pub(super) fn build<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) -> Arrays<F> {
+    let mut items: Vec<Item<F>> = prims
+        .into_iter()
         .enumerate()
-        .map(|(i, &b)| Item {
+        .map(|(i, (b, class))| Item {
             bounds: b,
             centroid: b.centroid(),
             index: i as u32,
+            class,
         })
         .collect();
     if items.is_empty() {
@@ -45,10 +47,10 @@ pub(super) fn build<F: Float>(bounds: &[Aabb<F>]) -> Arrays<F> {
     }
     let span = fold(&items);
     let tree = subtree(&mut items, 0, span, 0);
-    let mut nodes = Vec::with_capacity(2 * items.len());
-    let mut leaves = Vec::with_capacity(items.len());
-    nodes.push(empty_node());
+    let (mut nodes, mut leaves) = (vec![empty_node()], Vec::new());
     tree.flatten(0, &mut nodes, &mut leaves);
+    nodes.shrink_to_fit();
+    leaves.shrink_to_fit();
     // The partitions left the primitives in leaf order.
     let indices = items.par_iter().map(|it| it.index).collect();
     (nodes, indices, leaves)
@@ -59,6 +61,7 @@ struct Item<F> {
     bounds: Aabb<F>,
     centroid: Vec3<F>,
     index: u32,
+    class: u8,
 }
 
 /// A node's box and the box of its primitives' centroids, handed down by the parent's
@@ -292,10 +295,35 @@ struct Best<F> {
 /// The split of `items` (with span `span`, at depth `depth`): partitions `items` in place
 /// and returns where the right half starts and the halves' spans, or `None` for a leaf.
 ///
+/// By position ([`split_by_position`]); a node that would be a leaf but holds more than one
+/// class is split by class instead (the first item's class to the left), so that every
+/// leaf holds one class.
+fn split<F: Float>(items: &mut [Item<F>], span: &Span<F>, depth: usize) -> Option<(usize, Span<F>, Span<F>)> {
+    let by_position = split_by_position(items, span, depth);
+    let class = items.first()?.class;
+    if by_position.is_some() || items.iter().all(|it| it.class == class) {
+        return by_position;
+    }
+    let mut mid = 0;
+    for i in 0..items.len() {
+        if items[i].class == class {
+            items.swap(i, mid);
+            mid += 1;
+        }
+    }
+    Some((mid, fold(&items[..mid]), fold(&items[mid..])))
+}
+
+/// The split of `items` by the position of their centroids, or `None` for a leaf.
+///
 /// By SAH above [`MEDIAN_DEPTH`]: centroids are binned along each of the three axes and
 /// the cheapest bin boundary wins. Cost of a split: `C_t + (A_L·⌈N_L/4⌉ + A_R·⌈N_R/4⌉)/A`,
 /// of a leaf: `⌈N/4⌉` (see [`TRAVERSAL_COST`]).
-fn split<F: Float>(items: &mut [Item<F>], span: &Span<F>, depth: usize) -> Option<(usize, Span<F>, Span<F>)> {
+fn split_by_position<F: Float>(
+    items: &mut [Item<F>],
+    span: &Span<F>,
+    depth: usize,
+) -> Option<(usize, Span<F>, Span<F>)> {
     let n = items.len();
     if n <= 1 {
         return None;

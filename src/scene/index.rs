@@ -5,8 +5,8 @@
 //! nearest intersection of each lane, offered to the ray's nearest so far by one tie rule
 //! ([`Found::offer`]). Only the nearest's hit record is made, once, by its shape
 //! ([`Hittable::finish`]). The packets are tested by every ray (a plain loop), or, once
-//! there are enough parts, sit in the leaves of a BVH: leaf `k` holds the packets
-//! `leaves[k]..leaves[k + 1]`, one for a leaf of one kind.
+//! there are enough parts, are the leaves of a BVH whose leaves never mix kinds: leaf `k`
+//! is packet `k`.
 
 mod packet;
 
@@ -18,7 +18,7 @@ use crate::float::Float;
 use crate::ray::Ray;
 use crate::shape::Hit;
 pub(crate) use packet::Found;
-use packet::{Key, NONE, Packer, Packet};
+use packet::{Key, Packer, Packet, kind};
 
 /// Each ray's nearest hit so far in a batch ([`Index::hit_all`]), with the stream
 /// traversal's buffers; kept from batch to batch.
@@ -32,12 +32,11 @@ pub(crate) struct Nearests<F> {
 /// A scene's intersection structure, built from its objects on the first query.
 #[derive(Clone, Debug)]
 pub(super) struct Index<F> {
-    /// The packets every ray tests (`..looped`: all parts, or with a BVH the unbounded and
-    /// the huge ones), then the BVH leaves' packets.
-    packets: Vec<Packet<F>>,
-    looped: usize,
-    /// Leaf `k`'s packets are `packets[leaves[k]..leaves[k + 1]]`.
-    leaves: Vec<u32>,
+    /// The packets every ray tests: all the parts, or with a BVH the unbounded and the
+    /// huge ones.
+    looped: Vec<Packet<F>>,
+    /// With a BVH, leaf `k`'s parts: one kind, one packet.
+    leaves: Vec<Packet<F>>,
     bvh: Option<Bvh<F>>,
 }
 
@@ -49,7 +48,8 @@ impl<F: Float> Index<F> {
                 |(o, object): (usize, &Object<S, M>)| (0..object.shape.parts()).map(move |p| (o as u32, p));
             objects.iter().enumerate().flat_map(parts)
         };
-        let bounds = |&(o, p): &Key| objects[o as usize].shape.part_bounds(p);
+        let shape = |&(o, _): &Key| &objects[o as usize].shape;
+        let bounds = |k: &Key| shape(k).part_bounds(k.1);
         let whole = keys().filter_map(|k| bounds(&k)).fold(Aabb::empty(), Aabb::union);
         let bounded = keys().filter(|k| bounds(k).is_some()).count();
         let wanted = match acceleration {
@@ -63,33 +63,28 @@ impl<F: Float> Index<F> {
         // box would inflate every node above it.
         let half = 0.5 * whole.surface_area().to_f64();
         let in_tree = |k: &Key| wanted && bounds(k).is_some_and(|b| b.surface_area().to_f64() < half);
-        let (mut packer, mut packets) = (Packer::new(), Vec::new());
-        let mut looped: Vec<Key> = keys().filter(|k| !in_tree(k)).collect();
-        packer.pack(&mut looped, objects, &mut packets);
+        let mut packer = Packer::new();
         let mut index = Self {
-            looped: packets.len(),
-            packets,
+            looped: Vec::new(),
             leaves: Vec::new(),
             bvh: None,
         };
+        let mut looped: Vec<Key> = keys().filter(|k| !in_tree(k)).collect();
+        packer.pack(&mut looped, objects, &mut index.looped);
         if !wanted {
             return index;
         }
-        let (tree_keys, boxes): (Vec<Key>, Vec<Aabb<F>>) = keys()
-            .filter(in_tree)
-            .map(|k| (k, bounds(&k).unwrap_or(whole)))
-            .unzip();
-        let bvh = Bvh::build(&boxes);
-        drop(boxes);
+        let tree_keys: Vec<Key> = keys().filter(in_tree).collect();
+        let class = |k: &Key| kind(&shape(k).primitive(k.1));
+        let bvh = Bvh::build_classes(tree_keys.iter().map(|k| (bounds(k).unwrap_or(whole), class(k))));
+        index.leaves.reserve_exact(bvh.leaf_count());
         let mut leaf_keys = Vec::new();
         for k in 0..bvh.leaf_count() {
-            index.leaves.push(index.packets.len() as u32);
             leaf_keys.clear();
             leaf_keys.extend(bvh.leaf(k).iter().map(|&i| tree_keys[i as usize]));
-            packer.pack(&mut leaf_keys, objects, &mut index.packets);
+            packer.pack(&mut leaf_keys, objects, &mut index.leaves);
+            debug_assert_eq!(index.leaves.len(), k + 1, "a leaf is one packet");
         }
-        index.leaves.push(index.packets.len() as u32);
-        drop(tree_keys);
         index.bvh = Some(bvh);
         index
     }
@@ -97,12 +92,6 @@ impl<F: Float> Index<F> {
     /// Whether a BVH is used.
     pub(super) fn uses_bvh(&self) -> bool {
         self.bvh.is_some()
-    }
-
-    /// The packets of BVH leaf `k`.
-    #[inline(always)]
-    fn leaf(&self, k: usize) -> &[Packet<F>] {
-        &self.packets[self.leaves[k] as usize..self.leaves[k + 1] as usize]
     }
 
     /// The nearest hit in `(0, t_max)` and the object hit; at equal distance, the part
@@ -114,21 +103,20 @@ impl<F: Float> Index<F> {
         ray: &Ray<F>,
         t_max: F,
     ) -> Option<(Hit<F>, &'a Object<S, M>)> {
-        let (mut nearest, mut found) = (t_max, Found::none());
-        for p in &self.packets[..self.looped] {
-            p.offer(objects, ray, &mut nearest, &mut found);
+        let (mut nearest, mut found) = ([t_max], [Found::none()]);
+        let rays = std::slice::from_ref(ray);
+        for p in &self.looped {
+            p.offer(objects, rays, [0], &mut nearest, &mut found);
         }
         if let Some(bvh) = &self.bvh {
-            bvh.traverse(ray, nearest, |k, _| {
-                let mut changed = false;
-                for p in self.leaf(k) {
-                    changed |= p.offer(objects, ray, &mut nearest, &mut found);
-                }
-                changed.then_some(nearest)
+            bvh.traverse(ray, nearest[0], |k, _| {
+                let before = nearest[0];
+                self.leaves[k].offer(objects, rays, [0], &mut nearest, &mut found);
+                (nearest[0] < before).then_some(nearest[0])
             });
         }
         // A part offered at exactly `t_max` may hold the place of nothing found.
-        (nearest < t_max).then(|| Self::record(objects, ray, nearest, &found))
+        (nearest[0] < t_max).then(|| Self::record(objects, ray, nearest[0], &found[0]))
     }
 
     /// [`Index::hit`] with no bound for each of `rays`, handed to `each(i, hit)` in the
@@ -146,27 +134,21 @@ impl<F: Float> Index<F> {
         let Nearests { t, found, streams } = near;
         t.clear();
         t.resize(rays.len(), F::infinity());
-        found.clear();
-        found.resize(rays.len(), Found::none());
-        for p in &self.packets[..self.looped] {
-            for ((ray, t), found) in rays.iter().zip(t.iter_mut()).zip(found.iter_mut()) {
-                p.offer(objects, ray, t, found);
-            }
+        // Read only where a part was found (`t < ∞`), so left as the last batch left it.
+        if found.len() < rays.len() {
+            found.resize(rays.len(), Found::none());
+        }
+        for p in &self.looped {
+            p.offer(objects, rays, 0..rays.len(), t, found);
         }
         if let Some(bvh) = &self.bvh {
             bvh.traverse_all(rays, t, streams, |k, reached, t| {
-                // All cut to one length: one bounds check serves the three.
-                let (rays, found) = (&rays[..t.len()], &mut found[..t.len()]);
-                for p in self.leaf(k) {
-                    for &r in reached {
-                        let r = r as usize;
-                        p.offer(objects, &rays[r], &mut t[r], &mut found[r]);
-                    }
-                }
+                let reached = reached.iter().map(|&r| r as usize);
+                self.leaves[k].offer(objects, rays, reached, t, found);
             });
         }
         for (i, ray) in rays.iter().enumerate() {
-            let hit = (found[i].key.0 != NONE).then(|| Self::record(objects, ray, t[i], &found[i]));
+            let hit = (t[i] < F::infinity()).then(|| Self::record(objects, ray, t[i], &found[i]));
             each(i, hit.map(|(hit, object)| (hit, &object.material)));
         }
     }
@@ -186,12 +168,11 @@ impl<F: Float> Index<F> {
     /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.
     #[inline]
     pub(super) fn occluded<S: Layout<F>, M>(&self, objects: &[Object<S, M>], ray: &Ray<F>, t_max: F) -> bool {
-        let blocks = |packets: &[Packet<F>]| packets.iter().any(|p| p.any(objects, ray, t_max));
-        blocks(&self.packets[..self.looped])
+        self.looped.iter().any(|p| p.any(objects, ray, t_max))
             || self
                 .bvh
                 .as_ref()
-                .is_some_and(|bvh| bvh.any(ray, t_max, |k| blocks(self.leaf(k))))
+                .is_some_and(|bvh| bvh.any(ray, t_max, |k| self.leaves[k].any(objects, ray, t_max)))
     }
 }
 

@@ -93,6 +93,13 @@ impl<F: Float> Hittable<F> for Sphere<F> {
     /// spheres at a time.
     #[inline]
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        let f = ray.origin - self.center;
+        let (b, c) = (f.dot(ray.direction), f.length_squared() - self.radius * self.radius);
+        // Outside (`c > 0`) and heading away (`b > 0`): both roots are negative, so skip the
+        // square root and the division (one branch for both tests, `&` not `&&`).
+        if (c > F::zero()) & (b > F::zero()) {
+            return None;
+        }
         let (t0, t1) = self.roots(ray)?;
         let t = if t0 > F::zero() { t0 } else { t1 };
         (t > F::zero() && t < t_max).then(|| Intersection::at(t))

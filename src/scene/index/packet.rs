@@ -5,17 +5,18 @@ use crate::float::Float;
 use crate::lanes::{F4, LANES};
 use crate::ray::Ray;
 use crate::scene::layout::{Layout, Primitive};
-use crate::shape::{Intersection, Sphere, Sphere4, Triangle4};
+use crate::shape::{Hittable, Intersection, Sphere, Sphere4, Triangle4};
 use crate::vec3::Vec3;
 
 /// A part of an object: `(object, part)`, both numbered as the scene holds them.
 pub(super) type Key = (u32, u32);
 
-/// The object of no part: an empty lane, or a ray's nearest when nothing was hit.
+/// The object of no part: an empty lane.
 pub(super) const NONE: u32 = u32::MAX;
 
 /// What a ray's nearest hit so far needs besides its `t` for the record: which part, and
-/// where on it. `object == NONE` while nothing is found.
+/// where on it. Nothing is found while the nearest `t` is still the query's bound (`∞` in
+/// a batch): the one "no hit" encoding, so a `Found` is read only once a part was offered.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Found<F> {
     pub(super) key: Key,
@@ -23,7 +24,7 @@ pub(crate) struct Found<F> {
 }
 
 impl<F: Float> Found<F> {
-    /// Nothing found.
+    /// No part yet.
     pub(super) fn none() -> Self {
         Self {
             key: (NONE, 0),
@@ -45,16 +46,14 @@ impl<F: Float> Found<F> {
     /// objects in the order added, a shape's parts in order). Whatever order the parts are
     /// offered in, the nearest ends the same: the answer of a loop over all the parts.
     #[inline(always)]
-    pub(super) fn offer(&mut self, nearest: &mut F, t: F, key: Key, coords: impl FnOnce() -> [F; 3]) -> bool {
+    pub(super) fn offer(&mut self, nearest: &mut F, t: F, key: Key, coords: impl FnOnce() -> [F; 3]) {
         if t < *nearest || (t == *nearest && key < self.key) {
             *nearest = t;
             *self = Self {
                 key,
                 coords: coords(),
             };
-            return true;
         }
-        false
     }
 }
 
@@ -71,6 +70,8 @@ pub(super) struct Packet<F> {
 enum Lanes<F> {
     /// Spheres, in SIMD lanes.
     Spheres(Sphere4<F>),
+    /// A lone sphere, tested alone: cheaper than lanes left empty.
+    Sphere(Sphere<F>),
     /// Triangles, in SIMD lanes.
     Triangles(Triangle4<F>),
     /// Other parts, each through its shape's [`Hittable::intersect_part`].
@@ -78,31 +79,50 @@ enum Lanes<F> {
 }
 
 impl<F: Float> Packet<F> {
-    /// Offers each lane's intersection with `ray` (with no bound, so the answer cannot
-    /// depend on the order packets are visited in) to the ray's nearest.
+    /// Offers each lane's intersection with each ray `rays[r]`, for `r` in `which`, to that
+    /// ray's nearest `(nearest[r], found[r])`. A lane is asked with no bound, so the
+    /// answer cannot depend on the order packets are visited in.
     #[inline(always)]
     pub(super) fn offer<S: Layout<F>, M>(
         &self,
         objects: &[Object<S, M>],
-        ray: &Ray<F>,
-        nearest: &mut F,
-        found: &mut Found<F>,
-    ) -> bool {
+        rays: &[Ray<F>],
+        which: impl IntoIterator<Item = usize>,
+        nearest: &mut [F],
+        found: &mut [Found<F>],
+    ) {
+        // All cut to one length: one bounds check serves the three.
+        let (rays, found) = (&rays[..nearest.len()], &mut found[..nearest.len()]);
+        // The kind is matched once for all the rays.
         match &self.lanes {
-            Lanes::Spheres(s) => self.offer_lanes(s.hits(ray), |_| [F::zero(); 3], nearest, found),
-            Lanes::Triangles(tri) => {
-                let hits = tri.hits(ray);
-                self.offer_lanes(hits.t, |lane| hits.coords(lane), nearest, found)
+            Lanes::Spheres(s) => {
+                for r in which {
+                    let t = s.hits(&rays[r]);
+                    self.offer_lanes(t, |_| [F::zero(); 3], &mut nearest[r], &mut found[r]);
+                }
             }
-            Lanes::Others => {
-                let mut changed = false;
-                for &(object, part) in self.keys.iter().take_while(|k| k.0 != NONE) {
-                    let shape = &objects[object as usize].shape;
-                    if let Some(i) = shape.intersect_part(part, ray, F::infinity()) {
-                        changed |= found.offer(nearest, i.t, (object, part), || i.coords);
+            Lanes::Sphere(s) => {
+                for r in which {
+                    if let Some(i) = s.intersect(&rays[r], F::infinity()) {
+                        found[r].offer(&mut nearest[r], i.t, self.keys[0], || i.coords);
                     }
                 }
-                changed
+            }
+            Lanes::Triangles(tri) => {
+                for r in which {
+                    let hits = tri.hits(&rays[r]);
+                    self.offer_lanes(hits.t, |lane| hits.coords(lane), &mut nearest[r], &mut found[r]);
+                }
+            }
+            Lanes::Others => {
+                for r in which {
+                    for &(object, part) in self.keys.iter().take_while(|k| k.0 != NONE) {
+                        let shape = &objects[object as usize].shape;
+                        if let Some(i) = shape.intersect_part(part, &rays[r], F::infinity()) {
+                            found[r].offer(&mut nearest[r], i.t, (object, part), || i.coords);
+                        }
+                    }
+                }
             }
         }
     }
@@ -110,20 +130,13 @@ impl<F: Float> Packet<F> {
     /// Offers the nearest lane of `t` (`+∞` for a miss); of equally near lanes the first,
     /// whose part comes first.
     #[inline(always)]
-    fn offer_lanes(
-        &self,
-        t: F4<F>,
-        coords: impl Fn(usize) -> [F; 3],
-        nearest: &mut F,
-        found: &mut Found<F>,
-    ) -> bool {
+    fn offer_lanes(&self, t: F4<F>, coords: impl Fn(usize) -> [F; 3], nearest: &mut F, found: &mut Found<F>) {
         let min = t.min_lane();
         // Most packets hold nothing nearer: one comparison before a lane is looked up.
-        if !(min < F::infinity() && min <= *nearest) {
-            return false;
+        if min < F::infinity() && min <= *nearest {
+            let lane = t.mask_eq(min).trailing_zeros() as usize;
+            found.offer(nearest, min, self.keys[lane], || coords(lane));
         }
-        let lane = t.mask_eq(min).trailing_zeros() as usize;
-        found.offer(nearest, min, self.keys[lane], || coords(lane))
     }
 
     /// The lanes' parts.
@@ -137,6 +150,7 @@ impl<F: Float> Packet<F> {
     pub(super) fn any<S: Layout<F>, M>(&self, objects: &[Object<S, M>], ray: &Ray<F>, t_max: F) -> bool {
         match &self.lanes {
             Lanes::Spheres(s) => s.any(ray, t_max),
+            Lanes::Sphere(s) => s.intersect(ray, F::infinity()).is_some_and(|i| i.t < t_max),
             Lanes::Triangles(t) => t.any(ray, t_max),
             // Asked with no bound too, as the lanes are: the same answer on both paths.
             Lanes::Others => self
@@ -150,6 +164,16 @@ impl<F: Float> Packet<F> {
                         .is_some_and(|i| i.t < t_max)
                 }),
         }
+    }
+}
+
+/// The kind of a part as a number, the BVH's class for it: a leaf holds one kind, so it
+/// is one packet.
+pub(super) fn kind<F>(primitive: &Primitive<F>) -> u8 {
+    match primitive {
+        Primitive::Sphere(_) => 0,
+        Primitive::Triangle(_) => 1,
+        Primitive::Other => 2,
     }
 }
 
@@ -171,6 +195,7 @@ impl<F: Float> Packer<F> {
 
     /// Appends to `out` the packets of the parts `keys`: spheres, then triangles, then the
     /// others, each kind four to a packet in key order (the order the lanes' tie needs).
+    /// Parts of one kind, four at most (a BVH leaf's), make one packet.
     pub(super) fn pack<S: Layout<F>, M>(
         &mut self,
         keys: &mut [Key],
@@ -197,8 +222,12 @@ impl<F: Float> Packer<F> {
             keys
         };
         for chunk in spheres.chunks(LANES) {
+            let lanes = match chunk {
+                [(_, lone)] => Lanes::Sphere(*lone),
+                _ => Lanes::Spheres(Sphere4::new(chunk.iter().map(|&(_, s)| s))),
+            };
             out.push(Packet {
-                lanes: Lanes::Spheres(Sphere4::new(chunk.iter().map(|&(_, s)| s))),
+                lanes,
                 keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
             });
         }
