@@ -1,6 +1,7 @@
 //! Axis-aligned bounding boxes and the ray–box slab test.
 
 use crate::float::Float;
+use crate::lanes::F4;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
 
@@ -71,103 +72,108 @@ impl<F: Float> Aabb<F> {
         }
     }
 
-    /// Whether the ray meets the box for some `t` in `(0, t_max)`, by the slab test.
-    /// For many boxes and one ray, build a [`RayBoxTest`] once instead.
+    /// Whether the ray meets the box for some `t` in `[0, t_max]`, by the slab test
+    /// ([`slab_test`], the one the BVH runs, with the other three lanes empty).
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> bool {
-        RayBoxTest::new(ray).hit(&self.corners(), t_max)
+        let r = SlabRay::new(ray);
+        let empty = Self::empty();
+        let lanes = |corner: Vec3<F>, none: Vec3<F>, axis: usize| {
+            F4([corner[axis], none[axis], none[axis], none[axis]])
+        };
+        let (lo, hi) = (
+            |a| lanes(self.min, empty.min, a),
+            |a| lanes(self.max, empty.max, a),
+        );
+        let near = std::array::from_fn(|axis| if r.negative(axis) { hi(axis) } else { lo(axis) });
+        let far = std::array::from_fn(|axis| if r.negative(axis) { lo(axis) } else { hi(axis) });
+        let (t0, t1) = slab_test(&near, &far, &r, t_max);
+        t0.0[0] <= t1.0[0]
     }
 
-    /// `[min, max]`, the layout [`RayBoxTest`] indexes by the ray's direction signs.
+    /// `[min, max]`.
     #[inline]
     pub fn corners(&self) -> [Vec3<F>; 2] {
         [self.min, self.max]
     }
 }
 
-/// A ray prepared for many slab tests: its origin, reciprocal direction (and the same
-/// grown for the far faces) and direction signs, so each box costs six subtractions, six
-/// multiplications and a few min/max.
+/// A ray as the slab test needs it: its origin, reciprocal direction, and the reciprocal
+/// grown for the far faces ([`slab_test`]).
 #[derive(Clone, Copy, Debug)]
-pub struct RayBoxTest<F> {
-    origin: Vec3<F>,
-    inv_d: Vec3<F>,
-    inv_far: Vec3<F>,
-    /// Per axis, 1 if the direction is negative: the index of the near corner.
-    neg: [usize; 3],
+pub(crate) struct SlabRay<F> {
+    origin: [F; 3],
+    inv_d: [F; 3],
+    inv_far: [F; 3],
 }
 
 /// `1 + 2γ(4)`, the factor on the reciprocal direction for the far faces that keeps the
-/// slab test conservative (see [`RayBoxTest::entry`]).
+/// slab test conservative (see [`slab_test`]).
 #[inline]
-pub(crate) fn far_growth<F: Float>() -> F {
+fn far_growth<F: Float>() -> F {
     F::one() + F::gamma(4) * crate::float::lit(2.0)
 }
 
-impl<F: Float> RayBoxTest<F> {
+impl<F: Float> SlabRay<F> {
     /// Prepares `ray` (`1/D` may have infinite components; that is fine).
     #[inline]
-    pub fn new(ray: &Ray<F>) -> Self {
-        let inv_d = ray.direction.map(|d| F::one() / d);
+    pub(crate) fn new(ray: &Ray<F>) -> Self {
+        let inv_d = [0, 1, 2].map(|axis| F::one() / ray.direction[axis]);
         Self {
-            origin: ray.origin,
+            origin: [0, 1, 2].map(|axis| ray.origin[axis]),
             inv_d,
             inv_far: inv_d.map(|i| i * far_growth()),
-            neg: [
-                usize::from(inv_d.x < F::zero()),
-                usize::from(inv_d.y < F::zero()),
-                usize::from(inv_d.z < F::zero()),
-            ],
         }
     }
 
-    /// Whether the ray meets `b` for some `t` in `(0, t_max)`.
-    #[inline]
-    pub fn hit(&self, corners: &[Vec3<F>; 2], t_max: F) -> bool {
-        self.entry(corners, t_max).is_some()
+    /// Whether the direction is negative along `axis` (then a box's near face is its high
+    /// one).
+    #[inline(always)]
+    pub(crate) fn negative(&self, axis: usize) -> bool {
+        self.inv_d[axis] < F::zero()
     }
 
-    /// Where the ray enters the box `corners = [min, max]` (clamped to 0 if it starts inside), if it meets `b` for
-    /// some `t` in `(0, t_max)`: the intersection of the three slabs
-    /// `t ∈ [(near − O)/D, (far − O)/D]`, the near face chosen by the sign of `D`, with an
-    /// exit as soon as the running interval is empty.
-    ///
-    /// # Precision
-    /// As in pbrt-v4 §6.1.2 the far distances are grown so that rounding never makes a ray
-    /// that grazes the box miss it (the test stays conservative), but the growth is folded
-    /// into the reciprocal once per ray, which takes a multiplication off every box. A near
-    /// distance `fl(fl(near − O)·fl(1/D))` is within `(1 ± γ(3))` of the true one; a far
-    /// distance `fl(fl(far − O)·fl(fl(1/D)·g))` is at least `g(1 − γ(4))` times the true one
-    /// (four roundings). With `g = 1 + 2γ(4)`, `g(1 − γ(4)) = 1 + γ(4) − 2γ(4)² > 1 + γ(3)`,
-    /// so whenever the true near distance is at most the true far one, the computed ones
-    /// compare the same way. (pbrt's `1 + 2γ(3)` applied after the product leaves no room
-    /// for the rounding of that last multiplication.) A ray lying in a slab's plane gives
-    /// `0·∞ = NaN`, which fails every comparison: no constraint.
-    #[inline]
-    pub fn entry(&self, corners: &[Vec3<F>; 2], t_max: F) -> Option<F> {
-        let mut t0 = F::zero();
-        let mut t1 = t_max;
-        // The axis indexes five arrays at once; an iterator chain would hide that.
-        #[allow(clippy::needless_range_loop)]
-        for axis in 0..3 {
-            // Index by the sign, not a branch (Williams et al. 2005); `& 1` proves the bound.
-            let n = self.neg[axis] & 1;
-            let (near, far) = (corners[n][axis], corners[n ^ 1][axis]);
-            let o = self.origin[axis];
-            let tn = (near - o) * self.inv_d[axis];
-            let tf = (far - o) * self.inv_far[axis];
-            if tn > t0 {
-                t0 = tn;
-            }
-            if tf < t1 {
-                t1 = tf;
-            }
-            if t0 > t1 {
-                return None;
-            }
-        }
-        Some(t0)
+    /// The direction's octant: bit `a` set where it is negative along axis `a`.
+    #[inline(always)]
+    pub(crate) fn octant(&self) -> usize {
+        (0..3).map(|axis| usize::from(self.negative(axis)) << axis).sum()
     }
+}
+
+/// The slab test of one ray against four boxes at once, given by their `near` and `far`
+/// faces along each axis (the near face is the low one where the direction is positive):
+/// the entry and exit distances `(t0, t1)` of the intersection of the three slabs
+/// `t ∈ [(near − O)/D, (far − O)/D]`, clipped to `[0, t_max]`. The ray meets box `k` where
+/// `t0[k] ≤ t1[k]`; `t0` is then where it enters (0 if it starts inside).
+///
+/// # Precision
+/// As in pbrt-v4 §6.1.2 the far distances are grown so that rounding never makes a ray
+/// that grazes the box miss it (the test stays conservative), but the growth is folded
+/// into the reciprocal once per ray, which takes a multiplication off every box. A near
+/// distance `fl(fl(near − O)·fl(1/D))` is within `(1 ± γ(3))` of the true one; a far
+/// distance `fl(fl(far − O)·fl(fl(1/D)·g))` is at least `g(1 − γ(4))` times the true one
+/// (four roundings). With `g = 1 + 2γ(4)`, `g(1 − γ(4)) = 1 + γ(4) − 2γ(4)² > 1 + γ(3)`,
+/// so whenever the true near distance is at most the true far one, the computed ones
+/// compare the same way. (pbrt's `1 + 2γ(3)` applied after the product leaves no room
+/// for the rounding of that last multiplication.) A ray lying in a slab's plane gives
+/// `0·∞ = NaN`, which fails every comparison: no constraint.
+#[inline(always)]
+pub(crate) fn slab_test<F: Float>(
+    near: &[F4<F>; 3],
+    far: &[F4<F>; 3],
+    ray: &SlabRay<F>,
+    t_max: F,
+) -> (F4<F>, F4<F>) {
+    let mut t0 = F4::splat(F::zero());
+    let mut t1 = F4::splat(t_max);
+    for axis in 0..3 {
+        let o = F4::splat(ray.origin[axis]);
+        let t_near = (near[axis] - o) * F4::splat(ray.inv_d[axis]);
+        let t_far = (far[axis] - o) * F4::splat(ray.inv_far[axis]);
+        t0 = F4::select_lt(t0, t_near, t_near, t0);
+        t1 = F4::select_lt(t_far, t1, t_far, t1);
+    }
+    (t0, t1)
 }
 
 #[cfg(test)]
@@ -206,7 +212,7 @@ mod tests {
     /// Rays aimed at a box's corners and edges, in `f32`: wherever the stored ray meets
     /// the box (decided in `f64` from the same stored values, where the gap between the
     /// near and far distances is resolved exactly), the `f32` test says so, through the
-    /// scalar test and the BVH's four-wide one alike. About 12 500 of the rays meet the
+    /// box's own test and the BVH's alike. About 12 500 of the rays meet the
     /// box, 5 000 of them within a relative gap of 10⁻⁶. Without the far growth
     /// (`far_growth` = 1) the test fails.
     #[test]

@@ -16,22 +16,13 @@
 
 use super::Bvh;
 use super::wide::Child;
+use crate::aabb::{SlabRay, slab_test};
 use crate::float::Float;
-use crate::lanes::F4;
 use crate::ray::Ray;
 
 /// A node reached by this many rays or fewer is searched by each ray alone, nearest
 /// child first (the stream's overhead per node outweighs its overlap).
 const FEW_RAYS: usize = 4;
-
-/// A ray as the slab test needs it: origin, reciprocal direction, and the reciprocal
-/// grown for the far faces (see [`crate::aabb::RayBoxTest`]).
-#[derive(Clone, Copy, Debug)]
-struct Prepared<F> {
-    origin: [F; 3],
-    inv_d: [F; 3],
-    inv_far: [F; 3],
-}
 
 /// A ray of the batch that has reached a node is listed by its index in the batch alone
 /// (`u32`, called `RayIndex` below).
@@ -45,7 +36,7 @@ pub(crate) type RayIndex = u32;
 /// Buffers for [`Bvh::traverse_all`], kept from batch to batch.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Streams<F> {
-    prepared: Vec<Prepared<F>>,
+    prepared: Vec<SlabRay<F>>,
     /// The rays of each direction octant.
     octants: [Vec<RayIndex>; 8],
     /// One for each level of the tree.
@@ -95,17 +86,9 @@ impl<F: Float> Bvh<F> {
         prepared.clear();
         octants.iter_mut().for_each(Vec::clear);
         for (i, ray) in rays.iter().enumerate() {
-            let d = ray.direction;
-            let inv = [d.x, d.y, d.z].map(|d| F::one() / d);
-            let octant = usize::from(inv[0] < F::zero())
-                | usize::from(inv[1] < F::zero()) << 1
-                | usize::from(inv[2] < F::zero()) << 2;
-            octants[octant].push(i as u32);
-            prepared.push(Prepared {
-                origin: [ray.origin.x, ray.origin.y, ray.origin.z],
-                inv_d: inv,
-                inv_far: inv.map(|i| i * crate::aabb::far_growth()),
-            });
+            let r = SlabRay::new(ray);
+            octants[r.octant()].push(i as u32);
+            prepared.push(r);
         }
         let Child::Node(root) = root else {
             // A tree of one leaf: every ray goes to it.
@@ -138,7 +121,7 @@ impl<F: Float> Bvh<F> {
 struct Walk<'w, F, L> {
     bvh: &'w Bvh<F>,
     rays: &'w [Ray<F>],
-    prepared: &'w [Prepared<F>],
+    prepared: &'w [SlabRay<F>],
     stack: &'w mut [(Child, F)],
     t_max: &'w mut [F],
     leaf: &'w mut L,
@@ -178,7 +161,7 @@ impl<F: Float, L: FnMut(usize, &[RayIndex], &mut [F])> Walk<'_, F, L> {
             let prepared = &self.prepared[..self.t_max.len()];
             for &r in chunk {
                 let reach = self.t_max[r as usize];
-                let (t0, t1) = entries(&near, &far, &prepared[r as usize], reach);
+                let (t0, t1) = slab_test(&near, &far, &prepared[r as usize], reach);
                 let at = counts.map(|c| c as usize & (CHUNK - 1));
                 for lane in 0..4 {
                     here.children[lane][at[lane]] = r;
@@ -201,22 +184,4 @@ impl<F: Float, L: FnMut(usize, &[RayIndex], &mut [F])> Walk<'_, F, L> {
             }
         }
     }
-}
-
-/// The entry and exit distances `(t0, t1)` of the ray through each of a node's four
-/// boxes, given by their `near` and `far` faces along the ray's octant, clipped to
-/// `(0, t_max]`; the ray meets a box where `t0 <= t1`. [`Bvh::traverse`]'s slab test,
-/// operation for operation.
-#[inline(always)]
-fn entries<F: Float>(near: &[F4<F>; 3], far: &[F4<F>; 3], p: &Prepared<F>, t_max: F) -> (F4<F>, F4<F>) {
-    let mut t0 = F4::splat(F::zero());
-    let mut t1 = F4::splat(t_max);
-    for axis in 0..3 {
-        let o = F4::splat(p.origin[axis]);
-        let t_near = (near[axis] - o) * F4::splat(p.inv_d[axis]);
-        let t_far = (far[axis] - o) * F4::splat(p.inv_far[axis]);
-        t0 = F4::select_lt(t0, t_near, t_near, t0);
-        t1 = F4::select_lt(t_far, t1, t_far, t1);
-    }
-    (t0, t1)
 }

@@ -3,6 +3,7 @@
 //! with the same few instructions per lane, which the compiler turns into SIMD.
 
 use super::{Bvh, Node};
+use crate::aabb::{SlabRay, slab_test};
 use crate::float::Float;
 use crate::lanes::F4;
 use crate::ray::Ray;
@@ -140,47 +141,13 @@ pub(super) fn depth<F>(wide: &[Wide<F>], root: Option<Child>) -> usize {
     }
 }
 
-/// A ray prepared for the 4-wide slab test: origin and reciprocal direction in every
-/// lane, and the direction's octant, which picks each axis's near side.
-struct WideRay<F> {
-    origin: [F4<F>; 3],
-    inv_d: [F4<F>; 3],
-    /// `inv_d` grown for the far faces, as in [`crate::aabb::RayBoxTest`].
-    inv_far: [F4<F>; 3],
-    /// Bit `a` set where the direction's axis `a` is negative.
-    octant: usize,
-}
-
-impl<F: Float> WideRay<F> {
-    fn new(ray: &Ray<F>) -> Self {
-        let (o, d) = (ray.origin, ray.direction);
-        let inv = [d.x, d.y, d.z].map(|d| F::one() / d);
-        Self {
-            origin: [o.x, o.y, o.z].map(F4::splat),
-            inv_d: inv.map(F4::splat),
-            inv_far: inv.map(|i| F4::splat(i * crate::aabb::far_growth())),
-            octant: (0..3).map(|a| usize::from(inv[a] < F::zero()) << a).sum(),
-        }
-    }
-
-    /// The entry distance into each of the node's four boxes, and the mask of the boxes
-    /// the ray meets in `(0, t_max]`. Same slab test as [`crate::aabb::RayBoxTest::entry`], one axis
-    /// at a time over the four lanes; a ray lying in a slab's plane gives `0·∞ = NaN`
-    /// there, which fails the comparisons and so constrains nothing.
-    #[inline(always)]
-    fn entries(&self, n: &Wide<F>, t_max: F) -> (F4<F>, u32) {
-        let (near, far) = n.faces(self.octant);
-        let mut t0 = F4::splat(F::zero());
-        let mut t1 = F4::splat(t_max);
-        for axis in 0..3 {
-            let o = self.origin[axis];
-            let t_near = (near[axis] - o) * self.inv_d[axis];
-            let t_far = (far[axis] - o) * self.inv_far[axis];
-            t0 = F4::select_lt(t0, t_near, t_near, t0);
-            t1 = F4::select_lt(t_far, t1, t_far, t1);
-        }
-        (t0, F4::mask_le(t0, t1))
-    }
+/// The entry distance into each of node `n`'s four boxes, and the mask of the boxes the ray
+/// `r` (of direction octant `octant`) meets in `(0, t_max]`: [`slab_test`].
+#[inline(always)]
+fn entries<F: Float>(r: &SlabRay<F>, octant: usize, n: &Wide<F>, t_max: F) -> (F4<F>, u32) {
+    let (near, far) = n.faces(octant);
+    let (t0, t1) = slab_test(&near, &far, r, t_max);
+    (t0, F4::mask_le(t0, t1))
 }
 
 impl<F: Float> Bvh<F> {
@@ -195,7 +162,8 @@ impl<F: Float> Bvh<F> {
         mut t_max: F,
         mut visit: impl FnMut(usize, F) -> Option<F>,
     ) {
-        let r = WideRay::new(ray);
+        let r = SlabRay::new(ray);
+        let octant = r.octant();
         let mut top = 0;
         let mut current = match start {
             Some(start) => start,
@@ -205,7 +173,7 @@ impl<F: Float> Bvh<F> {
             match current {
                 Child::Node(i) => {
                     let n = &self.wide[i as usize];
-                    let (t, mut entered) = r.entries(n, t_max);
+                    let (t, mut entered) = entries(&r, octant, n, t_max);
                     if entered.count_ones() == 1 {
                         // One child entered (the common case): go straight down.
                         current = n.child[entered.trailing_zeros() as usize];

@@ -94,7 +94,10 @@ impl<F: Float> Hittable<F> for Sphere<F> {
     #[inline]
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
         let f = ray.origin - self.center;
-        let (b, c) = (f.dot(ray.direction), f.length_squared() - self.radius * self.radius);
+        let (b, c) = (
+            f.dot(ray.direction),
+            f.length_squared() - self.radius * self.radius,
+        );
         // Outside (`c > 0`) and heading away (`b > 0`): both roots are negative, so skip the
         // square root and the division (one branch for both tests, `&` not `&&`).
         if (c > F::zero()) & (b > F::zero()) {
