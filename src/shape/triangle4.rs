@@ -77,18 +77,12 @@ impl<F: Float> Triangle4<F> {
         let kx = if kz == 2 { 0 } else { kz + 1 };
         let ky = if kx == 2 { 0 } else { kx + 1 };
         let (o, d) = (ray.origin, ray.direction);
-        let moved = |v: usize, axis: usize| self.vertices[v][axis] - F4::splat(o[axis]);
+        let origin = [kx, ky, kz].map(|axis| F4::splat(o[axis]));
         // 2. Shear x and y.
-        let (sx, sy, sz) = (-d[kx] / d[kz], -d[ky] / d[kz], F::one() / d[kz]);
-        let sheared = |v: usize| {
-            let z = moved(v, kz);
-            (
-                moved(v, kx) + F4::splat(sx) * z,
-                moved(v, ky) + F4::splat(sy) * z,
-                z,
-            )
-        };
-        let ((ax, ay, a_z), (bx, by, b_z), (cx, cy, c_z)) = (sheared(0), sheared(1), sheared(2));
+        let shear = [F4::splat(-d[kx] / d[kz]), F4::splat(-d[ky] / d[kz])];
+        let sz = F::one() / d[kz];
+        let [[ax, ay, a_z], [bx, by, b_z], [cx, cy, c_z]] =
+            self.vertices.map(|v| sheared(&v, [kx, ky, kz], &origin, &shear));
         // 3. Edge functions, recomputed in f64 for a lane where one is zero in f32.
         let mut e0 = bx * cy - by * cx;
         let mut e1 = cx * ay - cy * ax;
@@ -145,6 +139,23 @@ impl<F: Float> Triangle4<F> {
             inv_det,
         }
     }
+}
+
+/// Vertex `v` (per axis) translated by `−O`, permuted to `(kx, ky, kz)` and sheared:
+/// `(x + Sₓz, y + S_yz, z)`, as the scalar test computes it.
+#[inline(always)]
+fn sheared<F: Float>(
+    v: &[F4<F>; 3],
+    [kx, ky, kz]: [usize; 3],
+    origin: &[F4<F>; 3],
+    shear: &[F4<F>; 2],
+) -> [F4<F>; 3] {
+    let z = v[kz] - origin[2];
+    [
+        v[kx] - origin[0] + shear[0] * z,
+        v[ky] - origin[1] + shear[1] * z,
+        z,
+    ]
 }
 
 #[cfg(test)]
