@@ -77,12 +77,15 @@ impl<F: Float> Triangle4<F> {
         let kx = if kz == 2 { 0 } else { kz + 1 };
         let ky = if kx == 2 { 0 } else { kx + 1 };
         let (o, d) = (ray.origin, ray.direction);
-        let origin = [kx, ky, kz].map(|axis| F4::splat(o[axis]));
+        let origin = [F4::splat(o[kx]), F4::splat(o[ky]), F4::splat(o[kz])];
         // 2. Shear x and y.
         let shear = [F4::splat(-d[kx] / d[kz]), F4::splat(-d[ky] / d[kz])];
         let sz = F::one() / d[kz];
-        let [[ax, ay, a_z], [bx, by, b_z], [cx, cy, c_z]] =
-            self.vertices.map(|v| sheared(&v, [kx, ky, kz], &origin, &shear));
+        // (Three calls, not `array::map`, which is not always inlined.)
+        let k = [kx, ky, kz];
+        let [ax, ay, a_z] = sheared(&self.vertices[0], k, &origin, &shear);
+        let [bx, by, b_z] = sheared(&self.vertices[1], k, &origin, &shear);
+        let [cx, cy, c_z] = sheared(&self.vertices[2], k, &origin, &shear);
         // 3. Edge functions, recomputed in f64 for a lane where one is zero in f32.
         let mut e0 = bx * cy - by * cx;
         let mut e1 = cx * ay - cy * ax;
