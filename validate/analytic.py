@@ -27,8 +27,9 @@ import scene_model
 import stats
 from scene_model import Scene
 
-ANGLES = [0.0, 30.0, 45.0, 60.0, 70.0, 80.0, 85.0]
-INDICES = [1.5, 1.0 / 1.5]
+# Incidence angles per index: from glass to air (1/1.5) reflection is total beyond 41.8.
+ANGLES = {1.5: [0.0, 30.0, 45.0, 60.0, 70.0, 80.0, 85.0],
+          1.0 / 1.5: [0.0, 20.0, 30.0, 35.0, 40.0, 41.0, 60.0]}
 
 
 def fresnel(cos_i: float, eta: float) -> float:
@@ -105,7 +106,9 @@ def furnace(work: Path, width: int, spp: int) -> list[dict]:
     for prec in ("f32", "f64"):
         img = renders.ours_image(scene, work, seed=1, precision=prec, **kw)
         err = np.abs(img[inside] - expect) / expect
-        tol = 1e-6 if prec == "f32" else 1e-13
+        # f64: exact but for the file's f32 rounding (half an ulp, 2^-24 relative); f32: a
+        # few ulps of the f32 mean of identical samples.
+        tol = 1e-6 if prec == "f32" else 2.0**-24
         rows.append({"check": "furnace", "renderer": f"ours {prec}", "expected": expect.tolist(),
                      "measured": img[inside].mean(0).tolist(), "stat": float(err.max()),
                      "stat_name": "max relative error", "passed": bool(err.max() <= tol),
@@ -168,10 +171,10 @@ material = "black"
 def fresnel_probe(work: Path, width: int = 8, spp: int = 4096) -> list[dict]:
     """Rows per angle and index: R exact, R Schlick, and what ours (exact), ours (Schlick)
     and Mitsuba measure, each with its z against the formula it should follow."""
-    rows, n_tests = [], 3 * len(ANGLES) * len(INDICES)
+    rows, n_tests = [], 3 * sum(len(a) for a in ANGLES.values())
     z_star = _z_threshold(stats.ALPHA / n_tests)
-    for index in INDICES:
-        for theta in ANGLES:
+    for index, angles in ANGLES.items():
+        for theta in angles:
             cos_i = math.cos(math.radians(theta))
             r_exact, r_schlick = fresnel(cos_i, 1 / index), schlick(cos_i, 1 / index)
             kw = dict(seed=1, width=width, spp=spp, max_depth=2)

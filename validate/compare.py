@@ -98,7 +98,7 @@ def power_checks(work: Path, width: int, spp: int, refs: dict, rows, pngs):
     d = glass.render["max_depth"]
     for delta in (-1, 1):
         check(f"depth{delta:+d}", glass, f"max_depth {d}{delta:+d} in the TOML "
-              f"(as if Mitsuba's were mapped to {d + 1 - delta})",
+              f"(as if the converter mapped {d} to {d + 1 + delta}, not {d + 1})",
               ours_f64(glass, max_depth=d + delta), refs["glass_heavy"])
 
 
