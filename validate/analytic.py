@@ -173,11 +173,13 @@ def fresnel_probe(work: Path, width: int = 8, spp: int = 4096) -> list[dict]:
     and Mitsuba measure, each with its z against the formula it should follow."""
     rows, n_tests = [], 3 * sum(len(a) for a in ANGLES.values())
     z_star = _z_threshold(stats.ALPHA / n_tests)
+    probe_seed = 0
     for index, angles in ANGLES.items():
         for theta in angles:
+            probe_seed += 1  # a stream of its own per probe: their errors are independent
             cos_i = math.cos(math.radians(theta))
             r_exact, r_schlick = fresnel(cos_i, 1 / index), schlick(cos_i, 1 / index)
-            kw = dict(seed=1, width=width, spp=spp, max_depth=2)
+            kw = dict(seed=probe_seed, width=width, spp=spp, max_depth=2)
             exact_scene = probe_scene(work / "analytic", theta, index, "exact")
             measured = {
                 "ours f64": renders.ours_image(exact_scene, work, precision="f64", **kw),

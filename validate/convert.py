@@ -17,14 +17,12 @@
 | triangles, meshes                      | one in-memory mesh per material, face normals          |
 | point light, intensity I               | `point`, intensity I (both: A/pi I cos/d^2)            |
 
-Why each mapping is exact is tested in test_conventions.py.
+Each mapping is tested in validate/tests/ (test_camera, test_depth_and_light, test_envmap,
+test_scene_files) and by the comparison itself (compare.py).
 """
 
 from __future__ import annotations
 
-import math
-
-import drjit as dr
 import mitsuba as mi
 import numpy as np
 
@@ -217,7 +215,3 @@ def render(scene: Scene, seed: int, **kw) -> np.ndarray:
     mscene = load(scene, **kw)
     img = mi.render(mscene, seed=seed, spp=kw.get("spp", 64))
     return np.array(img, dtype=np.float64)[:, :, :3]
-
-
-def _unused():  # keep linters quiet about names used only in type positions
-    return math, dr
