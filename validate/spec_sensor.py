@@ -14,6 +14,7 @@ uniform position within the pixel, this is exactly our jitter `x = i + delta`,
 delta uniform in [-1/2, 1/2) (src/render/reference.rs camera_ray, src/sampling.rs
 pixel_jitter).
 
+A crop window (the film's crop_offset and crop_size) renders part of the same image.
 `shift` (in pixels, default 0) moves every ray by that much in x and y: it exists only so
 the power check can make the classic half-pixel mistake on purpose.
 """
@@ -31,15 +32,18 @@ class SpecScreen(mi.Sensor):
 
     def __init__(self, props: mi.Properties):
         super().__init__(props)
-        nx, ny = self.film().size()
+        film = self.film()
+        nx, ny = film.size()
         if nx < 2 or ny < 2:
             raise ValueError("the spec's camera needs at least 2 x 2 pixels")
+        # With a crop window, sample2 spans the window: film x = offset + sample2.x * size.
+        (ox, oy), (cx, cy) = film.crop_offset(), film.crop_size()
         shift = props.get("shift", 0.0)
         eye = [props.get("eye_x", 0.0), props.get("eye_y", 0.0), props.get("eye_z", 0.0)]
-        # screen x = -2 + (4/(nx-1)) * (sample2.x * nx - 1/2 + shift), folded into a*u + b.
+        # screen x = -2 + (4/(nx-1)) * (ox + sample2.x * cx - 1/2 + shift), as a*u + b.
         px, py = 4.0 / (nx - 1), 2.0 / (ny - 1)
-        self.ax, self.bx = px * nx, -2.0 + px * (shift - 0.5)
-        self.ay, self.by = -py * ny, 1.0 - py * (shift - 0.5)
+        self.ax, self.bx = px * cx, -2.0 + px * (ox + shift - 0.5)
+        self.ay, self.by = -py * cy, 1.0 - py * (oy + shift - 0.5)
         self.eye = mi.Point3f(*eye)
 
     def sample_ray(self, time, sample1, sample2, sample3, active=True):

@@ -52,7 +52,7 @@ def _panel(x0: float, y0: float, title: str, series, x_label: str, y_label: str)
             f'<text transform="translate({x0 + 14},{y0 + TOP + ph / 2}) rotate(-90)" '
             f'text-anchor="middle">{escape(y_label)}</text>']
     for label, colour, dash, ps in series:
-        ps = sorted(p for p in ps if p[0] > 0 and p[1] > 0)
+        ps = [p for p in ps if p[0] > 0 and p[1] > 0]  # in the order given (by spp)
         if not ps:
             continue
         path = " ".join(f"{sx(x):.1f},{sy(y):.1f}" for x, y in ps)

@@ -141,3 +141,14 @@ def test_the_edge_test_sees_a_gaussian_filter_and_a_half_pixel_shift(scene_from)
     assert gauss[0, nx // 2] < 0.99  # the black side bleeds across the edge
     shifted = convert.render(scene, seed=3, width=nx, spp=64, max_depth=2, shift=0.5)[..., 0]
     assert 0.3 < shifted[0, nx // 2 - 1] < 0.7  # half the cell now lies across the edge
+
+
+def test_a_crop_window_shoots_the_same_rays_as_the_whole_film():
+    film = {"type": "hdrfilm", "width": 64, "height": 32}
+    whole = _sensor({"type": spec_sensor.NAME, "film": film})
+    crop = _sensor({"type": spec_sensor.NAME, "film": film | {
+        "crop_offset_x": 40, "crop_offset_y": 8, "crop_width": 8, "crop_height": 4}})
+    for u, v in [(0.0, 0.0), (0.5, 0.5), (0.99, 0.2)]:
+        _, d_crop, _ = _dir(crop, u, v)
+        _, d_whole, _ = _dir(whole, (40 + 8 * u) / 64, (8 + 4 * v) / 32)
+        assert np.allclose(d_crop, d_whole, atol=2e-7)
