@@ -15,6 +15,8 @@ from pathlib import Path
 
 import numpy as np
 
+import stats
+
 
 def write_png(path: Path, rgb8: np.ndarray) -> None:
     """A minimal 8-bit RGB PNG writer (no dependency beyond zlib)."""
@@ -61,12 +63,14 @@ def comparison_png(path: Path, o1, o2, m1, m2, block_t: np.ndarray, block: int,
     v = ((o1 - o2) ** 2 + (m1 - m2) ** 2) / 4
     h, w, _ = O.shape
     # Each pixel's difference over the typical noise of its block (a single pixel's
-    # two-seed variance has one degree of freedom: too noisy to divide by).
+    # two-seed variance has one degree of freedom: too noisy to divide by), with the
+    # tests' float32 allowance (stats.REL_FLOOR): a pixel both compute exactly is grey.
     sigma = np.zeros_like(v)
+    size = np.maximum(np.abs(O), np.abs(M))
     for j in range(0, h, block):
         for i in range(0, w, block):
             sl = (slice(j, j + block), slice(i, i + block))
-            sigma[sl] = np.sqrt(v[sl].mean((0, 1)) + 1e-30)
+            sigma[sl] = np.sqrt(v[sl].mean((0, 1)) + (stats.REL_FLOOR * size[sl]) ** 2 + 1e-30)
     z = ((O - M) / sigma).mean(-1) * np.sqrt(3)  # channels averaged, kept in sigma units
     bt = np.abs(block_t).max(-1)
     bt_full = np.kron(bt, np.ones((block, block)))[:h, :w]

@@ -158,5 +158,6 @@ def load_placed(obj: dict) -> tuple[np.ndarray, np.ndarray]:
 
 
 if __name__ == "__main__":  # a quick look: python meshio.py FILE
-    v, f = _read_ply(Path(sys.argv[1])) if sys.argv[1].endswith(".ply") else _read_obj(Path(sys.argv[1]))
+    file = Path(sys.argv[1])
+    v, f = _read_ply(file) if file.suffix.lower() == ".ply" else _read_obj(file)
     print(len(v), "vertices", len(f), "faces")

@@ -12,7 +12,8 @@ import ours
 import scene_model
 
 ROOT = ours.ROOT
-SCENES = sorted((ROOT / "scenes").glob("*.toml")) + sorted((ROOT / "validate/scenes").glob("*.toml"))
+SCENES = sorted((ROOT / "scenes").glob("*.toml")) + \
+    sorted((ROOT / "validate/scenes").glob("*.toml"))
 MESHES = ROOT / "tests/data/meshes"
 
 
