@@ -1,0 +1,141 @@
+"""The cross-check against Mitsuba 3: every scene, both precisions, the power checks and the
+analytic checks, into a table. Run through validate/run.sh (which sets up Mitsuba first).
+
+    python validate/compare.py --quick            # CI: 64 px wide, 256 spp, three scenes
+    python validate/compare.py                    # full: every scene, 128 px, 1024 spp
+    python validate/compare.py my_scene.toml ...  # those scenes (with the mode's settings)
+
+Exit status 0 only if every comparison passes, both analytic checks pass, and every
+injected mistake is rejected. Statistics: stats.py; what is converted how: convert.py.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+import mitsuba as mi
+
+mi.set_variant("scalar_rgb")  # float64 sphere intersections: the stronger reference
+
+import analytic  # noqa: E402
+import ours  # noqa: E402
+import renders  # noqa: E402
+import report  # noqa: E402
+import scene_model  # noqa: E402
+import stats  # noqa: E402
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+SEEDS = (1, 2)  # fixed: the verdicts are the same on every run
+MODES = {
+    "quick": {"width": 64, "spp": 256,
+              "scenes": ["scenes/matte_spheres.toml", "validate/scenes/glass_heavy.toml",
+                         "scenes/point_lights.toml"]},
+    "full": {"width": 128, "spp": 1024, "scenes": None},  # None: every scene there is
+}
+DRAGON_MESH = ROOT / "assets/meshes/dragon_vrip_res2.ply"
+
+
+def all_scenes() -> list[Path]:
+    found = sorted((ROOT / "scenes").glob("*.toml")) + sorted((HERE / "scenes").glob("*.toml"))
+    # The dragon needs a fetched mesh (tools/fetch_meshes.sh); without it, it is skipped
+    # and the report says so.
+    return [p for p in found if p.stem != "dragon" or DRAGON_MESH.exists()]
+
+
+def compare_scene(scene, work: Path, width: int, spp: int, precisions, rows, pngs):
+    depth = scene.render["max_depth"]
+    kw = dict(width=width, spp=spp, max_depth=depth)
+    m = [renders.mitsuba(scene, work, seed=s, **kw) for s in SEEDS]
+    exact = ours.exact_fresnel(scene)
+    for prec in precisions:
+        o = [renders.ours_image(exact, work, seed=s, precision=prec, **kw) for s in SEEDS]
+        v = stats.compare(o[0], o[1], m[0], m[1])
+        rows.append(report.row("agreement", scene.name, prec, "", width, o[0].shape, spp,
+                               depth, v))
+        pngs.append((f"{scene.name}-{prec}", o, m, v))
+    schlick = [mat for mat in scene.materials.values()
+               if mat["type"] == "dielectric" and mat["fresnel"] == "schlick"]
+    if schlick:  # the scene as written asks for Schlick: measure what that changes
+        o = [renders.ours_image(scene, work, seed=s, precision="f64", **kw) for s in SEEDS]
+        v = stats.compare(o[0], o[1], m[0], m[1])
+        rows.append(report.row("schlick", scene.name, "f64", "the file's Schlick reflectance",
+                               width, o[0].shape, spp, depth, v))
+    return m
+
+
+def power_checks(work: Path, width: int, spp: int, refs: dict, rows, pngs):
+    """Each mistake must be rejected; the same comparison without it passed above."""
+    def check(name, scene, injection, o, m):
+        v = stats.compare(o[0], o[1], m[0], m[1])
+        rows.append(report.row("power", scene.name, "f64", f"{name}: {injection}", width,
+                               o[0].shape, spp, scene.render["max_depth"], v))
+        pngs.append((f"power-{name}", o, m, v))
+
+    def ours_f64(scene, **over):
+        kw = dict(width=width, spp=spp, max_depth=scene.render["max_depth"]) | over
+        return [renders.ours_image(scene, work, seed=s, precision="f64", **kw) for s in SEEDS]
+
+    matte = ours.exact_fresnel(scene_model.load(ROOT / "scenes/matte_spheres.toml"))
+    bad = matte.copy()
+    bad.materials["matte_5"]["albedo"] = [a * 1.01 for a in bad.materials["matte_5"]["albedo"]]
+    check("albedo", matte, "ground albedo x 1.01 in the TOML", ours_f64(bad),
+          refs["matte_spheres"])
+    kw = dict(width=width, spp=spp, max_depth=matte.render["max_depth"])
+    shifted = [renders.mitsuba(matte, work, seed=s, shift=0.5, **kw) for s in SEEDS]
+    check("camera", matte, "sensor rays moved by half a pixel in x and y", ours_f64(matte),
+          shifted)
+    glass = scene_model.load(HERE / "scenes/glass_heavy.toml")  # written with exact Fresnel
+    sch = glass.copy()
+    for mat in sch.materials.values():
+        if mat["type"] == "dielectric":
+            mat["fresnel"] = "schlick"
+    check("schlick", glass, "Schlick instead of exact Fresnel in the TOML", ours_f64(sch),
+          refs["glass_heavy"])
+    d = glass.render["max_depth"]
+    for delta in (-1, 1):
+        check(f"depth{delta:+d}", glass, f"max_depth {d}{delta:+d} in the TOML "
+              f"(as if the converter mapped {d} to {d + 1 + delta}, not {d + 1})",
+              ours_f64(glass, max_depth=d + delta), refs["glass_heavy"])
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("scenes", nargs="*", help="scene files (default: the mode's)")
+    ap.add_argument("--quick", action="store_true", help="CI mode: small, three scenes")
+    ap.add_argument("--out", type=Path, help="results folder (default: validate/work/<mode>"
+                    " for quick, validate/results for full)")
+    ap.add_argument("--work", type=Path, default=HERE / "work", help="render cache")
+    ap.add_argument("--no-power", action="store_true", help="skip the power checks")
+    args = ap.parse_args()
+    mode = "quick" if args.quick else "full"
+    cfg = MODES[mode]
+    out = args.out or (HERE / "work" / "quick" if args.quick else HERE / "results")
+    work = args.work / mode
+    paths = [Path(p).resolve() for p in args.scenes] or (
+        [ROOT / p for p in cfg["scenes"]] if cfg["scenes"] else all_scenes())
+    start = time.perf_counter()
+    rows, pngs, refs = [], [], {}
+    for p in paths:
+        scene = scene_model.load(p)
+        print(f"== {scene.name}", flush=True)
+        refs[scene.name] = compare_scene(scene, work, cfg["width"], cfg["spp"], ("f32", "f64"),
+                                         rows, pngs)
+    if not args.no_power and not args.scenes:
+        print("== power checks", flush=True)
+        power_checks(work, cfg["width"], cfg["spp"], refs, rows, pngs)
+    print("== analytic checks", flush=True)
+    furnace = analytic.furnace(work, 64, 64)
+    probe = analytic.fresnel_probe(work)
+    elapsed = time.perf_counter() - start
+    ok = report.write(out, mode, cfg, rows, pngs, furnace, probe, renders.TIMES, elapsed,
+                      skipped_dragon=not DRAGON_MESH.exists())
+    print(f"{'PASS' if ok else 'FAIL'}: results in {out} ({elapsed:.0f} s)")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
