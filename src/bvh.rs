@@ -180,6 +180,13 @@ impl<F: Float> Bvh<F> {
     }
 }
 
+/// Bytes a node of the tree the traversal runs on takes: its four boxes and children, and
+/// its lanes' orders (for the tests that pin the documented memory figures).
+#[cfg(test)]
+pub(crate) fn wide_node_bytes<F>() -> usize {
+    std::mem::size_of::<Wide<F>>() + std::mem::size_of::<[[u8; 4]; 8]>()
+}
+
 /// [`Bvh::sah_cost`] of the binary tree `nodes`.
 fn sah_cost<F: Float>(nodes: &[Node<F>]) -> f64 {
     let area = |n: &Node<F>| Aabb::new(n.bounds[0], n.bounds[1]).surface_area().to_f64();

@@ -20,7 +20,6 @@ pub struct Triangle<F> {
     a: Vec3<F>,
     b: Vec3<F>,
     c: Vec3<F>,
-    normal: Vec3<F>,
 }
 
 impl<F: Float> Triangle<F> {
@@ -44,7 +43,7 @@ impl<F: Float> Triangle<F> {
             validate::finite_vec("triangle", v)?;
         }
         match unit_normal(a, b, c) {
-            Ok(normal) => Ok(Self { a, b, c, normal }),
+            Ok(_) => Ok(Self { a, b, c }),
             Err((cross_len, threshold)) => Err(Error::invalid(
                 "triangle",
                 format!(
@@ -61,9 +60,10 @@ impl<F: Float> Triangle<F> {
         [self.a, self.b, self.c]
     }
 
-    /// The unit outward normal `(B − A)×(C − A) / |(B − A)×(C − A)|`.
+    /// The unit outward normal `(B − A)×(C − A) / |(B − A)×(C − A)|` (computed, not stored:
+    /// a triangle takes three vertices of room).
     pub fn normal(&self) -> Vec3<F> {
-        self.normal
+        checked_normal(self.vertices())
     }
 
     /// This triangle in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains (it may become degenerate).
@@ -127,8 +127,8 @@ pub(crate) fn unit_normal<F: Float>(
     }
 }
 
-/// [`unit_normal`] of a triangle known to pass its test (a [`Mesh`](super::Mesh)'s, checked
-/// when it was built): the same bits, without the test.
+/// [`unit_normal`] of a triangle known to pass its test (a [`Triangle`]'s or a
+/// [`Mesh`](super::Mesh)'s, checked when it was built): the same bits, without the test.
 #[inline]
 pub(crate) fn checked_normal<F: Float>([a, b, c]: [Vec3<F>; 3]) -> Vec3<F> {
     let unit = |e: Vec3<F>| e / e.abs().max_element();
@@ -282,7 +282,7 @@ impl<F: Float> Hittable<F> for Triangle<F> {
 
     #[inline]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
-        record(&self.vertices(), self.normal, ray, hit.t, hit.coords)
+        record(&self.vertices(), self.normal(), ray, hit.t, hit.coords)
     }
 
     #[inline]

@@ -207,3 +207,29 @@ fn the_index_is_the_naive_loop() {
         assert!(hits > 2000, "most rays should hit something ({hits})");
     }
 }
+
+/// The sizes docs/PERFORMANCE.md gives for a scene's memory per part: a change of layout
+/// must update the document too.
+#[test]
+fn sizes_are_the_documented_ones() {
+    use crate::material::MaterialKind;
+    use std::mem::size_of;
+    let sizes = |name: &str, object: usize, packet: usize, node: usize| {
+        println!("{name}: object {object} B, packet {packet} B, wide node {node} B");
+        (object, packet, node)
+    };
+    let f32s = sizes(
+        "f32",
+        size_of::<Object<ShapeKind<f32>, MaterialKind<f32>>>(),
+        size_of::<packet::Packet<f32>>(),
+        crate::bvh::wide_node_bytes::<f32>(),
+    );
+    let f64s = sizes(
+        "f64",
+        size_of::<Object<ShapeKind<f64>, MaterialKind<f64>>>(),
+        size_of::<packet::Packet<f64>>(),
+        crate::bvh::wide_node_bytes::<f64>(),
+    );
+    assert_eq!(f32s, (64, 180, 160));
+    assert_eq!(f64s, (120, 328, 256));
+}
