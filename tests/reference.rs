@@ -1,13 +1,18 @@
-//! The fast renderer gives the reference renderer's bytes: every example scene, in f32 and
-//! f64, through both dispatch paths, at 1, 2 and 3 samples per pixel, on 1 and 2 threads,
-//! whole and in tiles. The reference renderer calls the spec's recursive `trace` once per
-//! sample, so this is the test that the batched, parallel renderer renders the spec.
+//! The fast renderer gives the reference renderer's bytes: every example scene, and two
+//! scenes lit by emitting surfaces (the Cornell box, and spheres, a triangle and a plane
+//! giving off light beside a point light, mirror and glass), in f32 and f64, through both
+//! dispatch paths, at 1, 2 and 3 samples per pixel, on 1 and 2 threads, with emitters
+//! sampled or not, whole and in tiles. The reference renderer calls the spec's recursive
+//! `trace` once per sample, so this is the test that the batched, parallel renderer
+//! renders the spec.
 
 #[path = "../examples/scenes/mod.rs"]
 mod scenes;
 
 use raytrace::prelude::*;
+use raytrace::scene_file::SceneFile;
 use raytrace::{DefaultRng, Image};
+use std::path::Path;
 
 /// Each example's scene in scalar `F`, with a small camera of its own kind.
 type Built<F> = (EnumScene<F>, Box<dyn Camera<F> + Sync>);
@@ -30,6 +35,37 @@ fn examples<F: Float>() -> Vec<(&'static str, Built<F>)> {
             ),
         ),
     ]
+}
+
+/// The scenes lit by emitting surfaces, small: the Cornell box from its scene file, and
+/// [`lamps`].
+fn emissive<F: Float>() -> Vec<(&'static str, Built<F>)> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.toml");
+    let mut file = SceneFile::load(&path).unwrap();
+    file.render_mut().width = 20;
+    let cornell = file.build::<F>().unwrap();
+    vec![
+        ("cornell_box", (cornell.scene, Box::new(cornell.camera))),
+        ("lamps", (lamps().unwrap(), Box::new(ScreenCamera::new(36, 18).unwrap()))),
+    ]
+}
+
+/// Every way light leaves a surface: a sphere lamp (seen from outside), a two-sided
+/// emitting triangle that also reflects, an emitting plane (never sampled), a point light,
+/// and a mirror and a glass sphere that see the lamps only through scattered rays.
+fn lamps<F: Float>() -> raytrace::Result<EnumScene<F>> {
+    let v = |x, y, z| Vec3::<F>::from_f64(x, y, z);
+    let mut scene = EnumScene::new(Background::solid(v(0.02, 0.02, 0.03))?);
+    scene.add(Sphere::new(v(0.0, -101.0, -3.0), lit(100.0))?, Lambertian::new(v(0.6, 0.6, 0.5))?);
+    scene.add(Sphere::new(v(-1.2, 0.0, -3.0), lit(0.6))?, Mirror::new(v(0.9, 0.9, 0.9))?);
+    scene.add(Sphere::new(v(0.2, -0.4, -2.5), lit(0.5))?, Dielectric::new(lit(1.5))?);
+    scene.add(Sphere::new(v(1.3, 0.6, -3.5), lit(0.3))?, Emissive::new(v(8.0, 6.0, 3.0))?);
+    let panel = Triangle::new(v(-1.5, 1.5, -4.0), v(0.5, 1.5, -4.0), v(-0.5, 2.5, -3.0))?;
+    let panel_light = Emissive::new(v(1.0, 2.0, 4.0))?.two_sided(true).with_albedo(v(0.5, 0.5, 0.5))?;
+    scene.add(panel, panel_light);
+    scene.add(Plane::new(v(0.0, 0.0, -8.0), v(0.0, 0.0, 1.0))?, Emissive::new(v(0.2, 0.1, 0.1))?);
+    scene.add_light(PointLight::new(v(2.0, 3.0, -1.0), v(4.0, 4.0, 4.0))?);
+    Ok(scene)
 }
 
 fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
@@ -56,12 +92,35 @@ where
     S: Layout<F> + Sync,
     M: Material<F, DefaultRng> + Sync,
 {
-    let renderer = Renderer::new(scene, &camera).spp(spp).max_depth(12).seed(7);
+    check_with(name, scene, camera, spp, LightSampling::Mis);
+}
+
+/// [`check`] with emitters' light found by `light_sampling`.
+fn check_with<F: Float, S, M>(
+    name: &str,
+    scene: &Scene<F, S, M>,
+    camera: &(dyn Camera<F> + Sync),
+    spp: u32,
+    light_sampling: LightSampling,
+) where
+    S: Layout<F> + Sync,
+    M: Material<F, DefaultRng> + Sync,
+{
+    let renderer = Renderer::new(scene, &camera)
+        .spp(spp)
+        .max_depth(12)
+        .seed(7)
+        .light_sampling(light_sampling);
     let reference = renderer.render_reference().unwrap();
     for threads in [1, 2] {
         let fast = in_pool(threads, || renderer.render().unwrap());
         let at = first_difference(&fast.image, &reference.image);
-        assert_eq!(at, None, "{name}, {}, {spp} spp, {threads} threads", F::NAME);
+        assert_eq!(
+            at,
+            None,
+            "{name}, {}, {spp} spp, {threads} threads, {light_sampling:?}",
+            F::NAME
+        );
         assert_eq!(
             fast.stats.rays,
             reference.stats.rays,
@@ -88,6 +147,28 @@ fn the_fast_renderer_gives_the_references_bytes_in_f32() {
 #[test]
 fn the_fast_renderer_gives_the_references_bytes_in_f64() {
     every_example::<f64>();
+}
+
+fn every_emissive_scene<F: Float>() {
+    for (name, (scene, camera)) in emissive::<F>() {
+        assert!(!scene.emitters::<DefaultRng>().is_empty(), "{name} samples emitters");
+        for spp in [1, 2, 3] {
+            check(name, &scene, &*camera, spp);
+            check(name, &scene.to_dyn::<DefaultRng>(), &*camera, spp);
+        }
+        check_with(name, &scene, &*camera, 2, LightSampling::Bsdf);
+        check_with(name, &scene.to_dyn::<DefaultRng>(), &*camera, 2, LightSampling::Bsdf);
+    }
+}
+
+#[test]
+fn the_fast_renderer_gives_the_references_bytes_with_emitters_in_f32() {
+    every_emissive_scene::<f32>();
+}
+
+#[test]
+fn the_fast_renderer_gives_the_references_bytes_with_emitters_in_f64() {
+    every_emissive_scene::<f64>();
 }
 
 /// A tile of the fast render is the same pixels of the reference's whole image.
@@ -156,4 +237,20 @@ fn the_comparison_sees_a_different_image() {
         .render()
         .unwrap();
     assert!(first_difference(&shallower.image, &reference.image).is_some());
+}
+
+/// With emitters, the comparison sees the other way of finding their light.
+#[test]
+fn the_comparison_sees_light_found_another_way() {
+    let (scene, camera) = emissive::<f32>().swap_remove(0).1;
+    let camera = &*camera;
+    let renderer = Renderer::new(&scene, &camera).spp(2).seed(7);
+    let mis = renderer.render_reference().unwrap();
+    let bsdf = Renderer::new(&scene, &camera)
+        .spp(2)
+        .seed(7)
+        .light_sampling(LightSampling::Bsdf)
+        .render()
+        .unwrap();
+    assert!(first_difference(&bsdf.image, &mis.image).is_some());
 }

@@ -232,6 +232,21 @@ pub fn chi2_equiprobable(observed: &[u64]) -> f64 {
         .sum()
 }
 
+/// Pearson's statistic `X² = Σ (Oᵢ − Eᵢ)²/Eᵢ` for counts `observed` against the expected
+/// shares `probabilities` (summing to 1) of their total.
+pub fn chi2_against(observed: &[u64], probabilities: &[f64]) -> f64 {
+    let total: u64 = observed.iter().sum();
+    observed
+        .iter()
+        .zip(probabilities)
+        .map(|(&o, &p)| {
+            let e = total as f64 * p;
+            let d = o as f64 - e;
+            d * d / e
+        })
+        .sum()
+}
+
 /// The upper-tail probability `P(χ²_k ≥ x)` of the χ² distribution with `k` degrees of
 /// freedom: the regularized upper incomplete gamma function `Q(k/2, x/2)`.
 pub fn chi2_sf(x: f64, k: u32) -> f64 {

@@ -148,7 +148,7 @@ fn a_batch_answers_like_single_rays() {
             let want = index
                 .hit(&objects, ray, f64::INFINITY)
                 .map(|(h, o)| (h, o.material));
-            assert_eq!(got.map(|(h, &m)| (h, m)), want, "{ray:?}");
+            assert_eq!(got.map(|(h, o)| (h, o.material)), want, "{ray:?}");
             hits += usize::from(want.is_some());
         }
         assert!(hits > rays.len() / 2, "most rays should hit something ({hits})");
