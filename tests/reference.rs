@@ -10,9 +10,7 @@
 mod scenes;
 
 use raytrace::prelude::*;
-use raytrace::scene_file::SceneFile;
 use raytrace::{DefaultRng, Image};
-use std::path::Path;
 
 /// Each example's scene in scalar `F`, with a small camera of its own kind.
 type Built<F> = (EnumScene<F>, Box<dyn Camera<F> + Sync>);
@@ -38,34 +36,17 @@ fn examples<F: Float>() -> Vec<(&'static str, Built<F>)> {
 }
 
 /// The scenes lit by emitting surfaces, small: the Cornell box from its scene file, and
-/// [`lamps`].
+/// spheres, a triangle and a plane giving off light.
 fn emissive<F: Float>() -> Vec<(&'static str, Built<F>)> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.toml");
-    let mut file = SceneFile::load(&path).unwrap();
-    file.render_mut().width = 20;
-    let cornell = file.build::<F>().unwrap();
+    let (cornell, camera, _) = scenes::cornell_box::<F>(20).unwrap();
     vec![
-        ("cornell_box", (cornell.scene, Box::new(cornell.camera))),
-        ("lamps", (lamps().unwrap(), Box::new(ScreenCamera::new(36, 18).unwrap()))),
+        ("cornell_box", (cornell, Box::new(camera))),
+        ("area_lights", spec_camera(scenes::area_lights())),
     ]
 }
 
-/// Every way light leaves a surface: a sphere lamp (seen from outside), a two-sided
-/// emitting triangle that also reflects, an emitting plane (never sampled), a point light,
-/// and a mirror and a glass sphere that see the lamps only through scattered rays.
-fn lamps<F: Float>() -> raytrace::Result<EnumScene<F>> {
-    let v = |x, y, z| Vec3::<F>::from_f64(x, y, z);
-    let mut scene = EnumScene::new(Background::solid(v(0.02, 0.02, 0.03))?);
-    scene.add(Sphere::new(v(0.0, -101.0, -3.0), lit(100.0))?, Lambertian::new(v(0.6, 0.6, 0.5))?);
-    scene.add(Sphere::new(v(-1.2, 0.0, -3.0), lit(0.6))?, Mirror::new(v(0.9, 0.9, 0.9))?);
-    scene.add(Sphere::new(v(0.2, -0.4, -2.5), lit(0.5))?, Dielectric::new(lit(1.5))?);
-    scene.add(Sphere::new(v(1.3, 0.6, -3.5), lit(0.3))?, Emissive::new(v(8.0, 6.0, 3.0))?);
-    let panel = Triangle::new(v(-1.5, 1.5, -4.0), v(0.5, 1.5, -4.0), v(-0.5, 2.5, -3.0))?;
-    let panel_light = Emissive::new(v(1.0, 2.0, 4.0))?.two_sided(true).with_albedo(v(0.5, 0.5, 0.5))?;
-    scene.add(panel, panel_light);
-    scene.add(Plane::new(v(0.0, 0.0, -8.0), v(0.0, 0.0, 1.0))?, Emissive::new(v(0.2, 0.1, 0.1))?);
-    scene.add_light(PointLight::new(v(2.0, 3.0, -1.0), v(4.0, 4.0, 4.0))?);
-    Ok(scene)
+fn spec_camera<F: Float>(scene: raytrace::Result<EnumScene<F>>) -> Built<F> {
+    (scene.unwrap(), Box::new(ScreenCamera::new(36, 18).unwrap()))
 }
 
 fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
