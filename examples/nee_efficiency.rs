@@ -17,6 +17,7 @@ mod common;
 mod scenes;
 
 use common::{Example, Options};
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use raytrace::advice::Precision;
 use raytrace::{Float, LightSampling, Renderer};
@@ -60,14 +61,25 @@ fn measured(reference: &Image) -> Vec<bool> {
 /// every channel.
 fn rmse(a: &Image, b: &Image, measured: &[bool]) -> f64 {
     let (mut sum, mut n) = (0.0, 0usize);
-    for ((p, q), _) in a.pixels().iter().zip(b.pixels()).zip(measured).filter(|(_, m)| **m) {
+    for ((p, q), _) in a
+        .pixels()
+        .iter()
+        .zip(b.pixels())
+        .zip(measured)
+        .filter(|(_, m)| **m)
+    {
         sum += (0..3).map(|k| (p[k] - q[k]).powi(2)).sum::<f64>();
         n += 3;
     }
     (sum / n as f64).sqrt()
 }
 
-fn render_in<F: Float>(o: &Options, spp: u32, seed: u64, sampling: LightSampling) -> raytrace::Result<Render> {
+fn render_in<F: Float>(
+    o: &Options,
+    spp: u32,
+    seed: u64,
+    sampling: LightSampling,
+) -> raytrace::Result<Render> {
     let (scene, camera, _) = scenes::cornell_box::<F>(o.width)?;
     Renderer::new(&scene, &camera)
         .spp(spp)
@@ -118,8 +130,7 @@ fn sweep(o: &Options) -> raytrace::Result<Vec<Point>> {
 
 type Plot<T> = Result<T, Box<dyn std::error::Error>>;
 
-/// Two panels: error against samples per pixel, and against time; each technique with the
-/// line `1/√N` (`1/√t`) through its last point, the one measured best.
+/// Two panels: error against samples per pixel, and against time.
 fn draw(path: &Path, points: &[Point], width: usize) -> Plot<()> {
     let root = SVGBackend::new(path, (1100, 440)).into_drawing_area();
     root.fill(&WHITE)?;
@@ -128,58 +139,84 @@ fn draw(path: &Path, points: &[Point], width: usize) -> Plot<()> {
     let e_max = points.iter().map(|p| p.rmse).fold(0.0, f64::max) * 2.0;
     let t_min = points.iter().map(|p| p.seconds).fold(f64::INFINITY, f64::min) * 0.5;
     let t_max = points.iter().map(|p| p.seconds).fold(0.0, f64::max) * 2.0;
-    let panels: [(&_, &str, &str, (f64, f64), fn(&Point) -> f64); 2] = [
-        (&left, "error vs samples per pixel", "samples per pixel", (0.7, 400.0), |p| f64::from(p.spp)),
-        (&right, "error vs render time", "seconds", (t_min, t_max), |p| p.seconds),
-    ];
-    for (area, caption, x_desc, (x0, x1), x_of) in panels {
-        let mut chart = ChartBuilder::on(area)
-            .caption(format!("{caption} (Cornell box, {width}×{width})"), ("sans-serif", 16))
-            .margin(10)
-            .x_label_area_size(35)
-            .y_label_area_size(65)
-            .build_cartesian_2d((x0..x1).log_scale(), (e_min..e_max).log_scale())?;
-        chart
-            .configure_mesh()
-            .x_desc(x_desc)
-            .y_desc("RMSE of linear radiance vs reference")
-            .y_label_formatter(&|y| format!("{y:.0e}"))
-            .draw()?;
-        for (method, _, colour) in METHODS {
-            let series: Vec<(f64, f64)> = points
-                .iter()
-                .filter(|p| p.method == method)
-                .map(|p| (x_of(p), p.rmse))
-                .collect();
-            let (first, (xb, eb)) = (series[0].0, series[series.len() - 1]);
-            let ideal = (0..=40).map(|k| first * (xb / first).powf(f64::from(k) / 40.0));
-            let ideal: Vec<(f64, f64)> = ideal.map(|x| (x, eb * (xb / x).sqrt())).collect();
-            chart.draw_series(LineSeries::new(ideal, colour.mix(0.35).stroke_width(1)))?;
-            chart
-                .draw_series(LineSeries::new(series.clone(), colour.stroke_width(2)))?
-                .label(method)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 15, y)], colour.stroke_width(2)));
-            chart.draw_series(series.into_iter().map(|p| Circle::new(p, 4, colour.filled())))?;
-        }
-        chart
-            .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())?
-            .label("1/√N through the last point")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 15, y)], BLACK.mix(0.35)));
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerLeft)
-            .border_style(BLACK)
-            .background_style(WHITE.mix(0.8))
-            .draw()?;
-    }
+    let caption = |what: &str| format!("{what} (Cornell box, {width}×{width})");
+    let per_sample = Axis {
+        caption: caption("error vs samples per pixel"),
+        name: "samples per pixel",
+        range: (0.7, 400.0),
+        of: |p| f64::from(p.spp),
+    };
+    panel(&left, &per_sample, points, (e_min, e_max))?;
+    let per_second = Axis {
+        caption: caption("error vs render time"),
+        name: "seconds",
+        range: (t_min, t_max),
+        of: |p| p.seconds,
+    };
+    panel(&right, &per_second, points, (e_min, e_max))?;
     root.present()?;
+    Ok(())
+}
+
+/// A panel's x axis: its caption and name, its range, and each point's value on it.
+struct Axis {
+    caption: String,
+    name: &'static str,
+    range: (f64, f64),
+    of: fn(&Point) -> f64,
+}
+
+/// Error (log) against `x` (log), each technique with the line `1/√x` through its last
+/// point, the one measured best.
+fn panel(area: &DrawingArea<SVGBackend<'_>, Shift>, x: &Axis, points: &[Point], e: (f64, f64)) -> Plot<()> {
+    let mut chart = ChartBuilder::on(area)
+        .caption(&x.caption, ("sans-serif", 16))
+        .margin(10)
+        .x_label_area_size(35)
+        .y_label_area_size(65)
+        .build_cartesian_2d((x.range.0..x.range.1).log_scale(), (e.0..e.1).log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc(x.name)
+        .y_desc("RMSE of linear radiance vs reference")
+        .y_label_formatter(&|y| format!("{y:.0e}"))
+        .draw()?;
+    for (method, _, colour) in METHODS {
+        let series: Vec<(f64, f64)> = points
+            .iter()
+            .filter(|p| p.method == method)
+            .map(|p| ((x.of)(p), p.rmse))
+            .collect();
+        let (first, (xb, eb)) = (series[0].0, series[series.len() - 1]);
+        let ideal = (0..=40).map(|k| first * (xb / first).powf(f64::from(k) / 40.0));
+        let ideal: Vec<(f64, f64)> = ideal.map(|x| (x, eb * (xb / x).sqrt())).collect();
+        chart.draw_series(LineSeries::new(ideal, colour.mix(0.35).stroke_width(1)))?;
+        chart
+            .draw_series(LineSeries::new(series.clone(), colour.stroke_width(2)))?
+            .label(method)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 15, y)], colour.stroke_width(2)));
+        chart.draw_series(series.into_iter().map(|p| Circle::new(p, 4, colour.filled())))?;
+    }
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())?
+        .label("1/√N through the last point")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 15, y)], BLACK.mix(0.35)));
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::LowerLeft)
+        .border_style(BLACK)
+        .background_style(WHITE.mix(0.8))
+        .draw()?;
     Ok(())
 }
 
 /// `σ²·t` of a technique, the inverse of its efficiency, from its largest render: the
 /// variance (RMSE², which falls as `1/N`) times the time it took.
 fn cost(points: &[Point], method: &str) -> f64 {
-    let p = points.iter().rfind(|p| p.method == method).expect("a point per method");
+    let p = points
+        .iter()
+        .rfind(|p| p.method == method)
+        .expect("a point per method");
     p.rmse * p.rmse * p.seconds
 }
 
@@ -187,7 +224,11 @@ fn run(o: &Options) -> raytrace::Result<()> {
     let points = common::pool(o)?.install(|| sweep(o))?;
     let mut csv = String::from("method,spp,seconds,rays,rmse\n");
     for p in &points {
-        let _ = writeln!(csv, "{},{},{:.6},{},{:.6e}", p.method, p.spp, p.seconds, p.rays, p.rmse);
+        let _ = writeln!(
+            csv,
+            "{},{},{:.6},{},{:.6e}",
+            p.method, p.spp, p.seconds, p.rays, p.rmse
+        );
     }
     std::fs::create_dir_all(&o.out).map_err(|source| raytrace::Error::Io {
         path: o.out.clone(),

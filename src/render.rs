@@ -214,7 +214,8 @@ where
             .par_chunks_mut(band)
             .enumerate()
             .map_init(Batch::<F, R>::new, |batch, (k, pixels)| {
-                let mut tracer = Tracer::new(self.scene, settings.max_depth).light_sampling(settings.light_sampling);
+                let mut tracer =
+                    Tracer::new(self.scene, settings.max_depth).light_sampling(settings.light_sampling);
                 let at = |i: usize| (tile.x + i % tile.width, tile.y + (k * band + i) / tile.width);
                 batch.render(&mut tracer, camera, settings, at, pixels);
                 progress.inc(pixels.len().div_ceil(tile.width) as u64);

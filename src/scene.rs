@@ -214,7 +214,8 @@ impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
     where
         M: Material<F, R>,
     {
-        self.emitters.get_or_init(|| Emitters::new::<F, S, M, R>(&self.objects))
+        self.emitters
+            .get_or_init(|| Emitters::new::<F, S, M, R>(&self.objects))
     }
 
     /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.

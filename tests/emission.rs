@@ -35,7 +35,13 @@ fn black<F: Float>() -> EnumScene<F> {
 }
 
 /// The colour of `ray` traced with `max_depth` and `light_sampling`, seed `seed`.
-fn trace<F: Float>(scene: &EnumScene<F>, ray: &Ray<F>, max_depth: u32, sampling: LightSampling, seed: u64) -> Color<F> {
+fn trace<F: Float>(
+    scene: &EnumScene<F>,
+    ray: &Ray<F>,
+    max_depth: u32,
+    sampling: LightSampling,
+    seed: u64,
+) -> Color<F> {
     let mut rng = DefaultRng::seed_from_u64(seed);
     Tracer::new(scene, max_depth)
         .light_sampling(sampling)
@@ -48,26 +54,44 @@ const BOTH: [LightSampling; 2] = [LightSampling::Mis, LightSampling::Bsdf];
 fn emitters_seen_directly_give_their_radiance<F: Float>() {
     let l = v::<F>(1.0, 2.0, 3.0);
     let mut scene = black::<F>();
-    scene.add(Sphere::new(v(0.0, 0.0, -4.0), lit(1.0)).unwrap(), Emissive::new(l).unwrap());
+    scene.add(
+        Sphere::new(v(0.0, 0.0, -4.0), lit(1.0)).unwrap(),
+        Emissive::new(l).unwrap(),
+    );
     let front = Ray::new(Vec3::zero(), v(0.0, 0.0, -1.0));
     let inside = Ray::new(v(0.0, 0.0, -4.0), v(0.0, 1.0, 0.0));
     for s in BOTH {
         assert_eq!(trace(&scene, &front, 1, s, 1), l, "{}", F::NAME);
-        assert_eq!(trace(&scene, &inside, 1, s, 1), Vec3::zero(), "{}: back face", F::NAME);
+        assert_eq!(
+            trace(&scene, &inside, 1, s, 1),
+            Vec3::zero(),
+            "{}: back face",
+            F::NAME
+        );
     }
     let mut two_sided = black::<F>();
     two_sided.add(
         Sphere::new(v(0.0, 0.0, -4.0), lit(1.0)).unwrap(),
         Emissive::new(l).unwrap().two_sided(true),
     );
-    assert_eq!(trace(&two_sided, &inside, 1, LightSampling::Mis, 1), l, "{}", F::NAME);
+    assert_eq!(
+        trace(&two_sided, &inside, 1, LightSampling::Mis, 1),
+        l,
+        "{}",
+        F::NAME
+    );
     // A triangle's front face is where A → B → C runs counter-clockwise.
     let mut panel = black::<F>();
     let t = Triangle::new(v(-1.0, -1.0, -3.0), v(1.0, -1.0, -3.0), v(0.0, 1.0, -3.0)).unwrap();
     panel.add(t, Emissive::new(l).unwrap());
     assert_eq!(trace(&panel, &front, 1, LightSampling::Mis, 1), l, "{}", F::NAME);
     let behind = Ray::new(v(0.0, 0.0, -6.0), v(0.0, 0.0, 1.0));
-    assert_eq!(trace(&panel, &behind, 1, LightSampling::Mis, 1), Vec3::zero(), "{}", F::NAME);
+    assert_eq!(
+        trace(&panel, &behind, 1, LightSampling::Mis, 1),
+        Vec3::zero(),
+        "{}",
+        F::NAME
+    );
 }
 float_tests!(emitters_seen_directly_give_their_radiance);
 
@@ -94,8 +118,18 @@ fn past_max_depth_an_emitter_is_black<F: Float>() {
     );
     let at_lamp_image = Ray::towards(Vec3::zero(), v(0.0, -5.0, -3.0)).unwrap();
     for s in BOTH {
-        assert_eq!(trace(&mirrored, &at_lamp_image, 1, s, 1), Vec3::zero(), "{}", F::NAME);
-        assert_eq!(trace(&mirrored, &at_lamp_image, 2, s, 1), l * lit::<F>(0.5), "{}", F::NAME);
+        assert_eq!(
+            trace(&mirrored, &at_lamp_image, 1, s, 1),
+            Vec3::zero(),
+            "{}",
+            F::NAME
+        );
+        assert_eq!(
+            trace(&mirrored, &at_lamp_image, 2, s, 1),
+            l * lit::<F>(0.5),
+            "{}",
+            F::NAME
+        );
     }
     // A matte floor lit only by the lamp: with one bounce allowed the light it would need a
     // second for is not sampled either, so every sample is black, both ways.
@@ -142,11 +176,19 @@ fn an_emitting_plane_is_found_by_scattered_rays<F: Float>() {
         Plane::new(v(0.0, 10.0, 0.0), v(0.0, -1.0, 0.0)).unwrap(),
         Emissive::new(l).unwrap(),
     );
-    scene.add(Plane::new(v(0.0, -1.0, 0.0), v(0.0, 1.0, 0.0)).unwrap(), Lambertian::new(a).unwrap());
+    scene.add(
+        Plane::new(v(0.0, -1.0, 0.0), v(0.0, 1.0, 0.0)).unwrap(),
+        Lambertian::new(a).unwrap(),
+    );
     assert!(scene.emitters::<DefaultRng>().is_empty());
     let down = Ray::new(Vec3::zero(), v(0.0, -1.0, -1.0).normalize());
     for seed in 0..100 {
-        assert_eq!(trace(&scene, &down, 2, LightSampling::Mis, seed), a * l, "{}", F::NAME);
+        assert_eq!(
+            trace(&scene, &down, 2, LightSampling::Mis, seed),
+            a * l,
+            "{}",
+            F::NAME
+        );
     }
 }
 float_tests!(an_emitting_plane_is_found_by_scattered_rays);
@@ -159,13 +201,29 @@ fn extreme_emitters_give_finite_pixels<F: Float>() {
         Plane::new(v(0.0, -1.0, 0.0), v(0.0, 1.0, 0.0)).unwrap(),
         Lambertian::new(v(0.5, 0.5, 0.5)).unwrap(),
     );
-    scene.add(Sphere::new(v(0.0, 5e3, -3.0), lit(0.5)).unwrap(), Emissive::new(v(1e8, 1e8, 1e8)).unwrap());
-    scene.add(Sphere::new(v(3.0, 1.0, -4.0), lit(0.5)).unwrap(), Emissive::new(v(1e30, 1.0, 1.0)).unwrap());
-    scene.add(Sphere::new(v(-3.0, 1.0, -4.0), lit(0.5)).unwrap(), Emissive::new(Vec3::zero()).unwrap());
+    scene.add(
+        Sphere::new(v(0.0, 5e3, -3.0), lit(0.5)).unwrap(),
+        Emissive::new(v(1e8, 1e8, 1e8)).unwrap(),
+    );
+    scene.add(
+        Sphere::new(v(3.0, 1.0, -4.0), lit(0.5)).unwrap(),
+        Emissive::new(v(1e30, 1.0, 1.0)).unwrap(),
+    );
+    scene.add(
+        Sphere::new(v(-3.0, 1.0, -4.0), lit(0.5)).unwrap(),
+        Emissive::new(Vec3::zero()).unwrap(),
+    );
     assert_eq!(scene.emitters::<DefaultRng>().len(), 2);
     let camera = ScreenCamera::new(24, 12).unwrap();
     let render = Renderer::new(&scene, &camera).spp(4).render().unwrap();
-    assert!(render.image.pixels().iter().flatten().all(|c| c.is_finite() && *c >= 0.0));
+    assert!(
+        render
+            .image
+            .pixels()
+            .iter()
+            .flatten()
+            .all(|c| c.is_finite() && *c >= 0.0)
+    );
 }
 float_tests!(extreme_emitters_give_finite_pixels);
 
@@ -178,7 +236,9 @@ fn scene_files_describe_emitters() {
         let text = format!("{head}[materials.lamp]\n{material}\n{object}");
         SceneFile::parse(&text, Path::new("lamp.toml")).and_then(|f| f.build::<f32>())
     };
-    let built = parse("type = \"emissive\"\nradiance = [1, 2, 3]\ntwo_sided = true\nalbedo = [0.5, 0.5, 0.5]").unwrap();
+    let built =
+        parse("type = \"emissive\"\nradiance = [1, 2, 3]\ntwo_sided = true\nalbedo = [0.5, 0.5, 0.5]")
+            .unwrap();
     let want = Emissive::new(v(1.0, 2.0, 3.0))
         .unwrap()
         .two_sided(true)

@@ -29,9 +29,9 @@
 //! scattered rays only) and a furnace 2 % too bright: run with `--nocapture` to see each `z`.
 
 use rand::SeedableRng;
+use raytrace::DefaultRng;
 use raytrace::prelude::*;
 use raytrace::render::Tracer;
-use raytrace::DefaultRng;
 
 /// Samples per check.
 const N: u64 = 1 << 16;
@@ -47,15 +47,20 @@ fn black<F: Float>() -> EnumScene<F> {
 }
 
 /// The mean and the standard error per channel of `ray`'s colour over `N` seeds.
-fn estimate<F: Float>(scene: &EnumScene<F>, ray: &Ray<F>, max_depth: u32, sampling: LightSampling) -> [(f64, f64); 3] {
+fn estimate<F: Float>(
+    scene: &EnumScene<F>,
+    ray: &Ray<F>,
+    max_depth: u32,
+    sampling: LightSampling,
+) -> [(f64, f64); 3] {
     let mut tracer = Tracer::new(scene, max_depth).light_sampling(sampling);
     let (mut sum, mut sum2) = ([0.0; 3], [0.0; 3]);
     for seed in 0..N {
         let mut rng = DefaultRng::seed_from_u64(seed);
         let c = tracer.trace(ray, 0, &mut rng).to_f64();
-        for k in 0..3 {
-            sum[k] += c[k];
-            sum2[k] += c[k] * c[k];
+        for (k, c) in c.into_iter().enumerate() {
+            sum[k] += c;
+            sum2[k] += c * c;
         }
     }
     let n = N as f64;
@@ -102,8 +107,14 @@ impl Lamp {
         let d = self.ratio * r;
         let (s, c) = self.beta.to_radians().sin_cos();
         let mut scene = black::<F>();
-        scene.add(Plane::new(Vec3::zero(), v([0.0, 1.0, 0.0])).unwrap(), Lambertian::new(v(ALBEDO)).unwrap());
-        scene.add(Sphere::new(v([d * s, d * c, 0.0]), lit(r)).unwrap(), Emissive::new(v(radiance)).unwrap());
+        scene.add(
+            Plane::new(Vec3::zero(), v([0.0, 1.0, 0.0])).unwrap(),
+            Lambertian::new(v(ALBEDO)).unwrap(),
+        );
+        scene.add(
+            Sphere::new(v([d * s, d * c, 0.0]), lit(r)).unwrap(),
+            Emissive::new(v(radiance)).unwrap(),
+        );
         if let Some((p, i)) = self.point {
             scene.add_light(PointLight::new(v(p), v(i)).unwrap());
         }
@@ -114,7 +125,9 @@ impl Lamp {
 
     /// `A·L·(r/d)²·cos β`, plus the point light's `A/π·I·cos θ/d²`.
     fn expected(&self) -> [f64; 3] {
-        let sphere = std::array::from_fn(|k| ALBEDO[k] * RADIANCE[k] * self.beta.to_radians().cos() / (self.ratio * self.ratio));
+        let sphere = std::array::from_fn(|k| {
+            ALBEDO[k] * RADIANCE[k] * self.beta.to_radians().cos() / (self.ratio * self.ratio)
+        });
         match self.point {
             None => sphere,
             Some((p, i)) => {
@@ -156,10 +169,16 @@ fn irradiance_from_a_sphere<F: Float>() {
         let want = lamp.expected();
         let what = format!("{} d/r = {} β = {}°", F::NAME, lamp.ratio, lamp.beta);
         let mis = estimate(&scene, &ray, 2, LightSampling::Mis);
-        assert!(agrees(mis, want, eps::<F>(), &format!("{what} MIS")), "{what} MIS");
+        assert!(
+            agrees(mis, want, eps::<F>(), &format!("{what} MIS")),
+            "{what} MIS"
+        );
         if lamp.ratio < 100.0 {
             let bsdf = estimate(&scene, &ray, 2, LightSampling::Bsdf);
-            assert!(agrees(bsdf, want, eps::<F>(), &format!("{what} BSDF")), "{what} BSDF");
+            assert!(
+                agrees(bsdf, want, eps::<F>(), &format!("{what} BSDF")),
+                "{what} BSDF"
+            );
         }
     }
 }
@@ -207,7 +226,10 @@ fn concentric(le: f64, a: f64, alpha: f64, s: f64, depth: u32) -> f64 {
 fn furnace<F: Float>(le: [f64; 3], a: f64, inner: Option<(f64, f64)>) -> EnumScene<F> {
     let mut scene = black::<F>();
     if let Some((alpha, rho)) = inner {
-        scene.add(Sphere::new(Vec3::zero(), lit(rho)).unwrap(), Lambertian::new(Vec3::splat(lit(alpha))).unwrap());
+        scene.add(
+            Sphere::new(Vec3::zero(), lit(rho)).unwrap(),
+            Lambertian::new(Vec3::splat(lit(alpha))).unwrap(),
+        );
     }
     let mut enclosure = Emissive::new(v(le)).unwrap().two_sided(true);
     if a > 0.0 {
@@ -225,18 +247,33 @@ fn white_furnaces<F: Float>() {
         let scene = furnace::<F>(LE, a, None);
         let ray = Ray::new(from, v([0.6, 0.8, 0.0]));
         for sampling in [LightSampling::Mis, LightSampling::Bsdf] {
-            let what = format!("{} integrating sphere a = {a}, D = {depth}, {sampling:?}", F::NAME);
+            let what = format!(
+                "{} integrating sphere a = {a}, D = {depth}, {sampling:?}",
+                F::NAME
+            );
             let got = estimate(&scene, &ray, depth, sampling);
-            assert!(agrees(got, LE.map(|l| integrating(l, a, depth)), eps::<F>(), &what), "{what}");
+            assert!(
+                agrees(got, LE.map(|l| integrating(l, a, depth)), eps::<F>(), &what),
+                "{what}"
+            );
         }
     }
     // A matte sphere inside: a black enclosure (one term) and a reflecting one (a series).
     let s = (0.8f64 / 2.0).powi(2);
     let towards_inner = Ray::towards(from, Vec3::zero()).unwrap();
-    for (a, alpha, depth) in [(0.0, 0.7, 1), (0.0, 0.7, 4), (0.6, 0.7, 2), (0.6, 0.7, 8), (0.9, 0.5, 30)] {
+    for (a, alpha, depth) in [
+        (0.0, 0.7, 1),
+        (0.0, 0.7, 4),
+        (0.6, 0.7, 2),
+        (0.6, 0.7, 8),
+        (0.9, 0.5, 30),
+    ] {
         let scene = furnace::<F>(LE, a, Some((alpha, 0.8)));
         for sampling in [LightSampling::Mis, LightSampling::Bsdf] {
-            let what = format!("{} enclosed sphere a = {a}, α = {alpha}, D = {depth}, {sampling:?}", F::NAME);
+            let what = format!(
+                "{} enclosed sphere a = {a}, α = {alpha}, D = {depth}, {sampling:?}",
+                F::NAME
+            );
             let got = estimate(&scene, &towards_inner, depth, sampling);
             let want = LE.map(|l| concentric(l, a, alpha, s, depth));
             assert!(agrees(got, want, eps::<F>(), &what), "{what}");
@@ -266,6 +303,11 @@ fn the_furnace_values_are_series_and_the_check_has_power() {
     let ray = Ray::towards(v([0.3, -1.4, 0.2]), Vec3::zero()).unwrap();
     let want = LE.map(|l| concentric(l, a, alpha, s, 8));
     for sampling in [LightSampling::Mis, LightSampling::Bsdf] {
-        assert!(!agrees(estimate(&scene, &ray, 8, sampling), want, eps::<f64>(), "2 % brighter"));
+        assert!(!agrees(
+            estimate(&scene, &ray, 8, sampling),
+            want,
+            eps::<f64>(),
+            "2 % brighter"
+        ));
     }
 }

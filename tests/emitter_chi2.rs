@@ -46,8 +46,8 @@ use rand::SeedableRng;
 use rand::rngs::Xoshiro256PlusPlus;
 use raytrace::sampling::uniform;
 use raytrace::shape::SurfaceSample;
-use raytrace::{DefaultRng, EnumScene, Float, Hittable, Mesh, Sphere, Triangle, Vec3, lit};
 use raytrace::{Background, Emissive, Lambertian, Plane};
+use raytrace::{DefaultRng, EnumScene, Float, Hittable, Mesh, Sphere, Triangle, Vec3, lit};
 use std::f64::consts::{PI, TAU};
 
 type Rng = Xoshiro256PlusPlus;
@@ -177,12 +177,16 @@ fn the_cone_test_rejects_wrong_samplers() {
     let (sphere, c) = sphere_seen_from::<f64>(from, 2.0, r);
     let w = normalize(sub(c, from));
     let d = len(sub(c, from));
-    let claimed = sphere.sample(Vec3::from_f64(from[0], from[1], from[2]), [0.5; 3]).unwrap().pdf;
+    let claimed = sphere
+        .sample(Vec3::from_f64(from[0], from[1], from[2]), [0.5; 3])
+        .unwrap()
+        .pdf;
     let (t, b) = frame(w);
     // The point at angle α from the centre's direction to `from`, azimuth φ.
     let at_angle = |cos_a: f64, phi: f64| {
         let sin_a = (1.0 - cos_a * cos_a).max(0.0).sqrt();
-        let n: [f64; 3] = std::array::from_fn(|i| -cos_a * w[i] + sin_a * (phi.cos() * t[i] + phi.sin() * b[i]));
+        let n: [f64; 3] =
+            std::array::from_fn(|i| -cos_a * w[i] + sin_a * (phi.cos() * t[i] + phi.sin() * b[i]));
         let point = Vec3::from_f64(c[0] + r * n[0], c[1] + r * n[1], c[2] + r * n[2]);
         SurfaceSample {
             point,
@@ -201,7 +205,8 @@ fn the_cone_test_rejects_wrong_samplers() {
         // θ uniform in [0, θ_max], then the nearer intersection (pbrt's cos α).
         let (sin_t, cos_t) = (u[0] * theta_max).sin_cos();
         let sin_max = r / d;
-        let cos_a = sin_t * sin_t / sin_max + cos_t * (1.0 - sin_t * sin_t / (sin_max * sin_max)).max(0.0).sqrt();
+        let cos_a =
+            sin_t * sin_t / sin_max + cos_t * (1.0 - sin_t * sin_t / (sin_max * sin_max)).max(0.0).sqrt();
         cone_uv(from, c, r, at_angle(cos_a, TAU * u[1]), 1e-12)
     });
     println!("cap by area: {cap:?}\nangle uniform: {angle:?}");
@@ -240,7 +245,11 @@ fn sphere_from_inside_is_uniform_by_area<F: Float>() {
     println!("inside {}: {verdict:?}", F::NAME);
     assert!(!verdict.rejected(), "{}: {verdict:?}", F::NAME);
     let (mean, z) = mean_inverse_density(22, 4.0 * PI, |u| sphere.sample(at, u).unwrap().pdf.to_f64());
-    println!("inside {}: mean 1/p = {mean} (4π = {}), z = {z}", F::NAME, 4.0 * PI);
+    println!(
+        "inside {}: mean 1/p = {mean} (4π = {}), z = {z}",
+        F::NAME,
+        4.0 * PI
+    );
     assert!(z.abs() < Z_MAX, "{}: z = {z}", F::NAME);
 }
 
@@ -302,7 +311,9 @@ fn triangles_are_sampled_uniformly_f64() {
 /// The wrong twin: `b₀` uniform, `b₁` uniform on what is left.
 #[test]
 fn the_triangle_test_rejects_a_wrong_sampler() {
-    let verdict = chi2_uv(32, |u| triangle_uv([u[0], (1.0 - u[0]) * u[1], (1.0 - u[0]) * (1.0 - u[1])], 0.0));
+    let verdict = chi2_uv(32, |u| {
+        triangle_uv([u[0], (1.0 - u[0]) * u[1], (1.0 - u[0]) * (1.0 - u[1])], 0.0)
+    });
     println!("b₀ uniform: {verdict:?}");
     assert!(verdict.rejected());
 }
@@ -320,11 +331,19 @@ fn solid_angle(v: [[f64; 3]; 3], p: [f64; 3]) -> f64 {
 fn triangle_density_is_per_solid_angle<F: Float>() {
     let v = TRIANGLE.map(|p| Vec3::<F>::from_f64(p[0], p[1], p[2]));
     let triangle = Triangle::new(v[0], v[1], v[2]).unwrap();
-    for (k, from) in [[0.0, 0.0, 0.0], [0.5, 0.8, -2.5], [5.0, -3.0, 1.0]].into_iter().enumerate() {
+    for (k, from) in [[0.0, 0.0, 0.0], [0.5, 0.8, -2.5], [5.0, -3.0, 1.0]]
+        .into_iter()
+        .enumerate()
+    {
         let at = Vec3::<F>::from_f64(from[0], from[1], from[2]);
         let want = solid_angle(TRIANGLE, from);
-        let (mean, z) = mean_inverse_density(40 + k as u64, want, |u| triangle.sample(at, u).unwrap().pdf.to_f64());
-        println!("triangle {} from {from:?}: mean 1/p = {mean}, Ω = {want}, z = {z}", F::NAME);
+        let (mean, z) = mean_inverse_density(40 + k as u64, want, |u| {
+            triangle.sample(at, u).unwrap().pdf.to_f64()
+        });
+        println!(
+            "triangle {} from {from:?}: mean 1/p = {mean}, Ω = {want}, z = {z}",
+            F::NAME
+        );
         assert!(z.abs() < Z_MAX, "{} from {from:?}: z = {z}", F::NAME);
     }
 }
@@ -391,8 +410,13 @@ fn mesh_triangles_are_chosen_by_area<F: Float>() {
         let s = mesh.sample(at, u).unwrap();
         // The density is the whole mesh's, 1/A, converted.
         let v = s.point - at;
-        let want = v.length_squared().to_f64() / (s.normal.dot(v).abs().to_f64() / v.length().to_f64()) / total;
-        assert!((s.pdf.to_f64() / want - 1.0).abs() < 1e3 * eps::<F>(), "{}", F::NAME);
+        let want =
+            v.length_squared().to_f64() / (s.normal.dot(v).abs().to_f64() / v.length().to_f64()) / total;
+        assert!(
+            (s.pdf.to_f64() / want - 1.0).abs() < 1e3 * eps::<F>(),
+            "{}",
+            F::NAME
+        );
         s.part as usize
     });
     println!("mesh parts {}: p = {p}", F::NAME);
@@ -428,7 +452,10 @@ fn emitters_scene() -> (EnumScene<f64>, Vec<f64>) {
     scene.add(sphere(0.0, 1.0), matte);
     scene.add(sphere(3.0, 0.5), light(4.0));
     scene.add(sphere(6.0, 1.0), light(1.0));
-    scene.add(Plane::new(v(0.0, -1.0, 0.0), v(0.0, 1.0, 0.0)).unwrap(), light(1.0));
+    scene.add(
+        Plane::new(v(0.0, -1.0, 0.0), v(0.0, 1.0, 0.0)).unwrap(),
+        light(1.0),
+    );
     scene.add(sphere(9.0, 2.0), light(0.0));
     let tri = Triangle::new(v(0.0, 3.0, -5.0), v(2.0, 3.0, -5.0), v(0.0, 5.0, -5.0)).unwrap();
     scene.add(tri, light(3.0).two_sided(true));
@@ -456,7 +483,13 @@ fn emitters_are_chosen_by_power() {
         assert!((got - want / total).abs() < 1e-12, "{got} vs {}", want / total);
     }
     let shares = emitters.probabilities().to_vec();
-    let index = |object: usize| emitters.objects().iter().position(|&o| o as usize == object).unwrap();
+    let index = |object: usize| {
+        emitters
+            .objects()
+            .iter()
+            .position(|&o| o as usize == object)
+            .unwrap()
+    };
     let p = choice_p(61, &shares, |u| {
         let (object, probability) = emitters.choose(u[0]);
         assert_eq!(probability, shares[index(object)]);
@@ -489,7 +522,9 @@ fn density_of_a_hit_is_the_sampled_one<F: Float>() {
         let at = Vec3::<F>::from_f64(from[0], from[1], from[2]);
         let mut missed = 0;
         for _ in 0..10_000 {
-            let s = shape.sample(at, [uniform(&mut rng), uniform(&mut rng), uniform(&mut rng)]).unwrap();
+            let s = shape
+                .sample(at, [uniform(&mut rng), uniform(&mut rng), uniform(&mut rng)])
+                .unwrap();
             let ray = raytrace::Ray::new(at, (s.point - at).normalize());
             let Some(hit) = shape.hit(&ray, F::infinity()) else {
                 missed += 1;
@@ -498,9 +533,17 @@ fn density_of_a_hit_is_the_sampled_one<F: Float>() {
             // Rounding moves the cosine at the emitter by ~ε, relatively ε/|cos|.
             let cos = hit.normal.dot(ray.direction).abs().to_f64();
             let ratio = shape.pdf(&ray, &hit).to_f64() / s.pdf.to_f64();
-            assert!((ratio - 1.0).abs() < tol / cos.min(1.0), "{name} in {}: {ratio}", F::NAME);
+            assert!(
+                (ratio - 1.0).abs() < tol / cos.min(1.0),
+                "{name} in {}: {ratio}",
+                F::NAME
+            );
         }
-        assert!(missed <= 10, "{name} in {}: {missed} rays missed their sampled point", F::NAME);
+        assert!(
+            missed <= 10,
+            "{name} in {}: {missed} rays missed their sampled point",
+            F::NAME
+        );
     }
 }
 

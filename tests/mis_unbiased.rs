@@ -71,9 +71,9 @@ where
                 let (dx, dy) = pixel_jitter(&mut rng);
                 let ray = camera.ray(x as f64 + dx, y as f64 + dy);
                 let c = tracer.trace(&ray, 0, &mut rng).to_f64();
-                for k in 0..3 {
-                    out.sum[b][k] += c[k];
-                    out.sum2[b][k] += c[k] * c[k];
+                for (k, c) in c.into_iter().enumerate() {
+                    out.sum[b][k] += c;
+                    out.sum2[b][k] += c * c;
                 }
                 out.n[b] += 1;
             }
@@ -94,7 +94,11 @@ fn z_scores(a: &Blocks, b: &Blocks) -> Vec<f64> {
     for i in 0..a.n.len() {
         for k in 0..3 {
             let ((ma, va), (mb, vb)) = (stats(a, i, k), stats(b, i, k));
-            z.push(if va + vb > 0.0 { (ma - mb) / (va + vb).sqrt() } else { 0.0 });
+            z.push(if va + vb > 0.0 {
+                (ma - mb) / (va + vb).sqrt()
+            } else {
+                0.0
+            });
         }
     }
     z
@@ -113,7 +117,11 @@ fn brighter(scene: &EnumScene<f64>, factor: f64) -> EnumScene<f64> {
             MaterialKind::Emissive(e) => {
                 let emission = e.emission();
                 let light = Emissive::new(emission.radiance() * factor).unwrap();
-                light.two_sided(emission.is_two_sided()).with_albedo(e.albedo()).unwrap().into()
+                light
+                    .two_sided(emission.is_two_sided())
+                    .with_albedo(e.albedo())
+                    .unwrap()
+                    .into()
             }
             m => m,
         };
@@ -129,11 +137,18 @@ fn mis_and_scattered_rays_agree_on_the_cornell_box() {
     let mis = blocks(&scene, &camera, depth, LightSampling::Mis, 1, 8);
     let bsdf = blocks(&scene, &camera, depth, LightSampling::Bsdf, 2, 8);
     let z = z_scores(&mis, &bsdf);
-    println!("Cornell box, MIS against scattered rays: largest |z| = {:.2} of {}", largest(&z), z.len());
+    println!(
+        "Cornell box, MIS against scattered rays: largest |z| = {:.2} of {}",
+        largest(&z),
+        z.len()
+    );
     assert!(largest(&z) <= 5.0, "{z:?}");
     let too_bright = blocks(&brighter(&scene, 1.2), &camera, depth, LightSampling::Bsdf, 3, 8);
     let z = z_scores(&mis, &too_bright);
-    println!("Cornell box, against a light 20 % too bright: largest |z| = {:.2}", largest(&z));
+    println!(
+        "Cornell box, against a light 20 % too bright: largest |z| = {:.2}",
+        largest(&z)
+    );
     assert!(largest(&z) > 5.0, "{z:?}");
 }
 
@@ -143,11 +158,17 @@ fn mis_and_scattered_rays_agree_at_a_small_depth_and_see_one_bounce_fewer() {
     let mis = blocks(&scene, &camera, 3, LightSampling::Mis, 7, 8);
     let bsdf = blocks(&scene, &camera, 3, LightSampling::Bsdf, 8, 8);
     let z = z_scores(&mis, &bsdf);
-    println!("Cornell box at depth 3, MIS against scattered rays: largest |z| = {:.2}", largest(&z));
+    println!(
+        "Cornell box at depth 3, MIS against scattered rays: largest |z| = {:.2}",
+        largest(&z)
+    );
     assert!(largest(&z) <= 5.0, "{z:?}");
     let short = blocks(&scene, &camera, 2, LightSampling::Bsdf, 9, 8);
     let z = z_scores(&mis, &short);
-    println!("Cornell box at depth 3, against depth 2: largest |z| = {:.2}", largest(&z));
+    println!(
+        "Cornell box at depth 3, against depth 2: largest |z| = {:.2}",
+        largest(&z)
+    );
     assert!(largest(&z) > 5.0, "{z:?}");
 }
 
@@ -158,6 +179,10 @@ fn mis_and_scattered_rays_agree_on_every_kind_of_light() {
     let mis = blocks(&scene, &camera, 6, LightSampling::Mis, 5, 6);
     let bsdf = blocks(&scene, &camera, 6, LightSampling::Bsdf, 6, 6);
     let z = z_scores(&mis, &bsdf);
-    println!("area lights, MIS against scattered rays: largest |z| = {:.2} of {}", largest(&z), z.len());
+    println!(
+        "area lights, MIS against scattered rays: largest |z| = {:.2} of {}",
+        largest(&z),
+        z.len()
+    );
     assert!(largest(&z) <= 5.0, "{z:?}");
 }

@@ -132,13 +132,22 @@ fn the_fast_renderer_gives_the_references_bytes_in_f64() {
 
 fn every_emissive_scene<F: Float>() {
     for (name, (scene, camera)) in emissive::<F>() {
-        assert!(!scene.emitters::<DefaultRng>().is_empty(), "{name} samples emitters");
+        assert!(
+            !scene.emitters::<DefaultRng>().is_empty(),
+            "{name} samples emitters"
+        );
         for spp in [1, 2, 3] {
             check(name, &scene, &*camera, spp);
             check(name, &scene.to_dyn::<DefaultRng>(), &*camera, spp);
         }
         check_with(name, &scene, &*camera, 2, LightSampling::Bsdf);
-        check_with(name, &scene.to_dyn::<DefaultRng>(), &*camera, 2, LightSampling::Bsdf);
+        check_with(
+            name,
+            &scene.to_dyn::<DefaultRng>(),
+            &*camera,
+            2,
+            LightSampling::Bsdf,
+        );
     }
 }
 

@@ -113,7 +113,10 @@ mod tests {
     use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
     use crate::vec3::Vec3;
 
-    fn object(shape: impl Into<ShapeKind<f64>>, material: impl Into<MaterialKind<f64>>) -> Object<ShapeKind<f64>, MaterialKind<f64>> {
+    fn object(
+        shape: impl Into<ShapeKind<f64>>,
+        material: impl Into<MaterialKind<f64>>,
+    ) -> Object<ShapeKind<f64>, MaterialKind<f64>> {
         Object {
             shape: shape.into(),
             material: material.into(),
@@ -128,7 +131,10 @@ mod tests {
         let objects = [
             object(sphere(1.0), Lambertian::new(Vec3::splat(0.5)).unwrap()),
             object(sphere(1.0), light(1.0)),
-            object(Plane::new(Vec3::zero(), Vec3::new(0.0, 1.0, 0.0)).unwrap(), light(1.0)),
+            object(
+                Plane::new(Vec3::zero(), Vec3::new(0.0, 1.0, 0.0)).unwrap(),
+                light(1.0),
+            ),
             object(unit, light(2.0).two_sided(true)),
             object(sphere(2.0), light(0.0)),
         ];
@@ -142,12 +148,20 @@ mod tests {
         assert_eq!(e.choose(p * 0.999), (1, e.probabilities()[0]));
         assert_eq!(e.choose(p * 1.001).0, 3);
         assert_eq!(e.choose(1.0 - 1e-16).0, 3);
-        let emission = |o: &Object<ShapeKind<f64>, MaterialKind<f64>>| Material::<f64, DefaultRng>::emission(&o.material).unwrap();
+        let emission = |o: &Object<ShapeKind<f64>, MaterialKind<f64>>| {
+            Material::<f64, DefaultRng>::emission(&o.material).unwrap()
+        };
         for (k, &i) in e.objects().iter().enumerate() {
             let o = &objects[i as usize];
-            assert_eq!(e.probability_of(o.shape.area(), emission(o)), e.probabilities()[k]);
+            assert_eq!(
+                e.probability_of(o.shape.area(), emission(o)),
+                e.probabilities()[k]
+            );
         }
-        assert_eq!(e.probability_of(objects[2].shape.area(), emission(&objects[2])), 0.0);
+        assert_eq!(
+            e.probability_of(objects[2].shape.area(), emission(&objects[2])),
+            0.0
+        );
         let none = Emitters::new::<f64, _, _, DefaultRng>(&objects[..1]);
         assert!(none.is_empty());
     }

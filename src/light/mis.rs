@@ -15,7 +15,7 @@ use crate::float::{Float, lit};
 /// `w = 0` when `p = 0` (or NaN), `w = 1` when `q = 0`, and `½` when both are infinite.
 #[inline]
 pub fn power_heuristic<F: Float>(p: F, q: F) -> F {
-    if !(p > F::zero()) {
+    if p.is_nan() || p <= F::zero() {
         return F::zero();
     }
     let r = q / p;
@@ -31,7 +31,13 @@ mod tests {
 
     #[test]
     fn weights_sum_to_one_and_never_overflow() {
-        for (p, q) in [(1.0f32, 2.0), (3.0, 0.5), (1e30, 1e-30), (1e-30, 1e30), (5.0, 5.0)] {
+        for (p, q) in [
+            (1.0f32, 2.0),
+            (3.0, 0.5),
+            (1e30, 1e-30),
+            (1e-30, 1e30),
+            (5.0, 5.0),
+        ] {
             let sum = power_heuristic(p, q) + power_heuristic(q, p);
             assert!((sum - 1.0).abs() < 1e-6, "{p} {q}: {sum}");
         }

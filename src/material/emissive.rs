@@ -196,7 +196,10 @@ mod tests {
         let grey = black.with_albedo(Vec3::splat(0.5)).unwrap();
         let s = Material::<f64, _>::scatter(&grey, &ray, &hit, &mut rng).unwrap();
         assert!(s.direction.dot(hit.normal) >= 0.0);
-        assert_eq!(Material::<f64, DefaultRng>::diffuse_albedo(&grey), Some(Vec3::splat(0.5)));
+        assert_eq!(
+            Material::<f64, DefaultRng>::diffuse_albedo(&grey),
+            Some(Vec3::splat(0.5))
+        );
     }
 
     #[test]
@@ -204,6 +207,11 @@ mod tests {
         let msg = Emissive::new(Vec3::new(1.0, -1.0, 0.0)).unwrap_err().to_string();
         assert!(msg.contains("emitted radiance"), "{msg}");
         assert!(Emissive::new(Vec3::new(f64::INFINITY, 0.0, 0.0)).is_err());
-        assert!(Emissive::new(Vec3::splat(1.0)).unwrap().with_albedo(Vec3::splat(1.5)).is_err());
+        assert!(
+            Emissive::new(Vec3::splat(1.0))
+                .unwrap()
+                .with_albedo(Vec3::splat(1.5))
+                .is_err()
+        );
     }
 }

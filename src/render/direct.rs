@@ -79,7 +79,8 @@ impl<F: Float, S: Layout<F>, M> Tracer<'_, F, S, M> {
         let cos = hit.normal.dot(dir);
         let radiance = emission.toward(dir.dot(sample.normal) < F::zero());
         let light_pdf = F::from_f64(chosen) * sample.pdf;
-        if cos <= F::zero() || radiance == Color::zero() || !(light_pdf > F::zero() && light_pdf.is_finite()) {
+        if cos <= F::zero() || radiance == Color::zero() || !(light_pdf > F::zero() && light_pdf.is_finite())
+        {
             return Color::zero();
         }
         // The shadow ray stops where the scene's own intersection meets the emitter's part

@@ -64,7 +64,10 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
     /// The same tracer, finding the light of emitting surfaces by `light_sampling`.
     #[must_use]
     pub fn light_sampling(self, light_sampling: LightSampling) -> Self {
-        Self { light_sampling, ..self }
+        Self {
+            light_sampling,
+            ..self
+        }
     }
 
     /// Rays traced so far (camera, scattered and shadow).

@@ -204,7 +204,13 @@ fn background<F: Float>(at: &Field, spec: &BackgroundSpec) -> Result<Background<
 
 fn material<F: Float>(at: &Field, spec: &MaterialSpec) -> Result<MaterialKind<F>> {
     let albedo_at = at.key("albedo");
-    let wrap = |e| blame::<F>(at, e, &[("refractive index", "index"), ("emitted radiance", "radiance")]);
+    let wrap = |e| {
+        blame::<F>(
+            at,
+            e,
+            &[("refractive index", "index"), ("emitted radiance", "radiance")],
+        )
+    };
     Ok(match *spec {
         MaterialSpec::Mirror { albedo } => Mirror::new(vec(check::albedo(&albedo_at, albedo)?))
             .map_err(wrap)?

@@ -212,7 +212,14 @@ impl<F: Float> Hittable<F> for Mesh<F> {
         let k = k.min(areas.cumulative.len() - 1) as u32;
         let v = self.triangle(k);
         let pdf_area = F::one() / areas.total;
-        Some(sample_triangle(&v, checked_normal(v), k, pdf_area, from, [u[1], u[2]]))
+        Some(sample_triangle(
+            &v,
+            checked_normal(v),
+            k,
+            pdf_area,
+            from,
+            [u[1], u[2]],
+        ))
     }
 
     fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {

@@ -170,9 +170,11 @@ impl<F: Float> Hittable<F> for Sphere<F> {
         Some(self.surface())
     }
 
-    /// From outside, a direction uniform in the cone of directions that meet the sphere
-    /// ([`Sphere::sample_cone`]); from inside, a point uniform on the whole sphere, its
-    /// density `1/4πr²` per area converted to solid angle. `u₂` is not used.
+    /// From outside, a direction uniform in the cone of directions that meet the sphere,
+    /// `1 − cos θ = u₀(1 − cos θ_max)`, `φ = 2πu₁`, as the visible point it reaches
+    /// (pbrt-v4's cone sampling; density `1/(2π(1 − cos θ_max))`); from inside, a point
+    /// uniform on the whole sphere, its density `1/4πr²` per area converted to solid angle.
+    /// `u₂` is not used.
     fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
         if !self.encloses(from) {
             return Some(self.sample_cone(from, [u[0], u[1]]));

@@ -301,7 +301,14 @@ impl<F: Float> Hittable<F> for Triangle<F> {
     /// `u₀, u₁`; `u₂` is not used.
     fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
         let pdf_area = F::one() / triangle_area(&self.vertices());
-        Some(sample_triangle(&self.vertices(), self.normal, 0, pdf_area, from, [u[0], u[1]]))
+        Some(sample_triangle(
+            &self.vertices(),
+            self.normal,
+            0,
+            pdf_area,
+            from,
+            [u[0], u[1]],
+        ))
     }
 
     fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
