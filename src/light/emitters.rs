@@ -41,7 +41,11 @@ impl Emitters {
         let mut table = Self::default();
         let mut powers = Vec::new();
         for (i, object) in objects.iter().enumerate() {
-            if let Some(p) = power(object.shape.area(), object.material.emission()) {
+            // The emission first: a mesh sums its areas only when it is asked to.
+            let Some(emission) = object.material.emission() else {
+                continue;
+            };
+            if let Some(p) = power(object.shape.area(), emission) {
                 table.total += p;
                 table.objects.push(i as u32);
                 table.cumulative.push(table.total);
@@ -92,7 +96,7 @@ impl Emitters {
     /// the same number it returns for it (the same arithmetic), 0 if it is not sampled.
     #[inline]
     pub fn probability_of<F: Float>(&self, area: Option<F>, emission: Emission<F>) -> f64 {
-        match power(area, Some(emission)) {
+        match power(area, emission) {
             Some(p) if !self.is_empty() => p / self.total,
             _ => 0.0,
         }
@@ -100,8 +104,8 @@ impl Emitters {
 }
 
 /// `Φ = π·L̄·s·A`, if the shape can be sampled and `Φ` is finite and positive.
-fn power<F: Float>(area: Option<F>, emission: Option<Emission<F>>) -> Option<f64> {
-    let p = emission?.power_per_area() * area?.to_f64();
+fn power<F: Float>(area: Option<F>, emission: Emission<F>) -> Option<f64> {
+    let p = emission.power_per_area() * area?.to_f64();
     (p.is_finite() && p > 0.0).then_some(p)
 }
 

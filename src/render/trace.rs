@@ -44,7 +44,7 @@ pub(super) enum Arrival<F> {
 /// Traces rays through one scene and counts them.
 pub struct Tracer<'a, F, S, M> {
     pub(super) scene: &'a Scene<F, S, M>,
-    pub(super) max_depth: u32,
+    max_depth: u32,
     light_sampling: LightSampling,
     pub(super) rays: u64,
 }
