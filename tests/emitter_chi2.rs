@@ -1,7 +1,8 @@
-//! Statistical tests of the samplers next-event estimation draws lights with: a sphere's
-//! cone of directions (seen from outside) and its surface (seen from inside), a point
-//! uniform on a triangle, a mesh's triangle in proportion to its area, an emitter in
-//! proportion to its power, and the change of density from area to solid angle.
+//! Statistical tests of the samplers next-event estimation draws lights with, for
+//! spheres and for the choice among emitters: a sphere's cone of directions (seen from
+//! outside) and its surface (seen from inside), an emitter chosen in proportion to its
+//! power, and, for every shape, the density a scattered ray's MIS weight uses. Triangles
+//! and meshes are in `triangle_light_chi2.rs`; the harness is `tests/common/draws.rs`.
 //!
 //! # The χ² harness
 //! As in `lambertian_chi2.rs`: each sample is mapped to `(u, v) ∈ [0, 1)²`, independent
@@ -11,104 +12,39 @@
 //!   cos θ_max)` (a direction uniform in solid angle over the cone has `cos θ` uniform on
 //!   `[cos θ_max, 1]`) and `v = φ/2π`;
 //! - the sphere from inside: `u = (1 + n·a)/2` and `v = φ/2π` of the sampled normal `n`
-//!   about an axis `a` (Archimedes);
-//! - a triangle, from the barycentrics `b` of the sampled point: `u = 1 − (1 − b₀)²` (the
-//!   density of `b₀` is `2(1 − b₀)`) and `v = b₁/(1 − b₀)` (uniform given `b₀`).
+//!   about an axis `a` (Archimedes).
 //!
-//! Choices among a few items (a mesh's triangles, the emitters) are tested with χ² against
-//! their expected shares (`k − 1` degrees of freedom). Every χ² test rejects at
-//! `p < 10⁻⁶` ([`CHI2_ALPHA`]). A sample that is impossible under the claimed distribution
-//! (a point off the sphere or hidden from `from`, a direction outside the cone, a density
-//! other than the one claimed) rejects outright.
+//! The choice among emitters is tested with χ² against their expected shares (`k − 1`
+//! degrees of freedom). Every χ² test rejects at `p < 10⁻⁶` ([`CHI2_ALPHA`]). A sample
+//! that is impossible under the claimed distribution (a point off the sphere or hidden from
+//! `from`, a direction outside the cone, a density other than the one claimed) rejects
+//! outright.
 //!
 //! # Densities
 //! What MIS needs besides the distribution is its density. For the cone it is checked
-//! exactly (it is constant); for area sampling the estimate `mean(1/p_ω)` must equal the
-//! solid angle the shape subtends (`E[1/p] = ∫ dω` over the directions `p > 0` covers):
-//! `4π` from inside a sphere, and Van Oosterom and Strackee's closed form for a triangle.
-//! The z-score of the mean (`2¹⁸` samples, the standard error from the samples) must stay
-//! below 5 (two-sided `p ≈ 5.7·10⁻⁷`). And for every sampled point, the density the shape
-//! reports for a ray that hits it there (`Hittable::pdf`, what a scattered ray's weight
-//! uses) must be the one `sample` returned.
+//! exactly (it is constant); from inside, `mean(1/p_ω)` over `2¹⁸` samples must equal `4π`,
+//! the solid angle the sphere covers (`E[1/p] = ∫ dω`), within 5 standard errors
+//! (two-sided `p ≈ 5.7·10⁻⁷`). And for every sampled point of a sphere, a triangle or a
+//! mesh, the density the shape reports for a ray that hits it there (`Hittable::pdf`, what
+//! a scattered ray's weight uses) must be the one `sample` returned.
 //!
 //! # Power
 //! Each harness also runs a wrong twin and must reject it: the visible cap sampled
 //! uniformly by area instead of the cone by solid angle, the cone's angle (not its cosine)
-//! uniform, `b₀` uniform on a triangle, a mesh's triangles chosen uniformly, emitters
-//! chosen uniformly, and the area-to-solid-angle factor `d/|cos|` instead of `d²/|cos|`.
-//! With these seeds every correct sampler gives `p > 10⁻³` and every twin `p < 10⁻²⁰`
-//! (run with `--nocapture` to see them).
+//! uniform, and emitters chosen uniformly. With these seeds every correct sampler gives
+//! `p > 10⁻³` and every twin `p < 10⁻²⁰` (run with `--nocapture` to see them).
 
 mod common;
 
+use common::draws::*;
 use common::*;
 use rand::SeedableRng;
 use rand::rngs::Xoshiro256PlusPlus;
 use raytrace::sampling::uniform;
 use raytrace::shape::SurfaceSample;
 use raytrace::{Background, Emissive, Lambertian, Plane};
-use raytrace::{DefaultRng, EnumScene, Float, Hittable, Mesh, Sphere, Triangle, Vec3, lit};
+use raytrace::{DefaultRng, EnumScene, Float, Hittable, Sphere, Triangle, Vec3, lit};
 use std::f64::consts::{PI, TAU};
-
-type Rng = Xoshiro256PlusPlus;
-
-/// Draws per χ² test.
-const SAMPLES: usize = 1 << 20;
-/// Draws per test of a mean density.
-const MEAN_SAMPLES: usize = 1 << 18;
-/// The largest |z| a correct mean may show: two-sided `p ≈ 5.7·10⁻⁷`.
-const Z_MAX: f64 = 5.0;
-
-/// The outcome of a χ² test on `(u, v)`.
-#[derive(Debug)]
-struct Verdict {
-    /// p-values of the `u` bins, the `v` bins and the joint grid.
-    p: [f64; 3],
-    /// Samples impossible under the claimed distribution.
-    impossible: u64,
-}
-
-impl Verdict {
-    fn rejected(&self) -> bool {
-        self.impossible > 0 || self.p.iter().any(|&p| p < CHI2_ALPHA)
-    }
-}
-
-/// Draws `SAMPLES` triples of uniform numbers from a generator seeded by `seed`, maps
-/// each with `map` to `(u, v)` (`None`: impossible), and tests `u`, `v` and `(u, v)`.
-fn chi2_uv(seed: u64, mut map: impl FnMut([f64; 3]) -> Option<(f64, f64)>) -> Verdict {
-    let (mut u_bins, mut v_bins, mut joint) = ([0u64; 20], [0u64; 24], [0u64; 96]);
-    let mut rng = Rng::seed_from_u64(seed);
-    let mut impossible = 0;
-    for _ in 0..SAMPLES {
-        let draw = [uniform(&mut rng), uniform(&mut rng), uniform(&mut rng)];
-        let Some((u, v)) = map(draw) else {
-            impossible += 1;
-            continue;
-        };
-        u_bins[bin_of(u, 20)] += 1;
-        v_bins[bin_of(v, 24)] += 1;
-        joint[bin_of(u, 8) * 12 + bin_of(v, 12)] += 1;
-    }
-    let p = |bins: &[u64]| chi2_sf(chi2_equiprobable(bins), bins.len() as u32 - 1);
-    Verdict {
-        p: [p(&u_bins), p(&v_bins), p(&joint)],
-        impossible,
-    }
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn len(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
-}
-
-/// `φ/2π ∈ [0, 1)` of `d` about the axis of the frame `(t, b)`.
-fn azimuth(d: [f64; 3], (t, b): ([f64; 3], [f64; 3])) -> f64 {
-    (dot(d, b).atan2(dot(d, t)) / TAU).rem_euclid(1.0)
-}
 
 /// A sphere of radius `r` whose centre lies `ratio·r` from `from` along a skew axis.
 fn sphere_seen_from<F: Float>(from: [f64; 3], ratio: f64, r: f64) -> (Sphere<F>, [f64; 3]) {
@@ -213,22 +149,6 @@ fn the_cone_test_rejects_wrong_samplers() {
     assert!(cap.rejected() && angle.rejected());
 }
 
-/// `mean(1/p)` and the z-score of its difference from `want`, over `MEAN_SAMPLES` draws
-/// (a draw giving `None` is an error).
-fn mean_inverse_density(seed: u64, want: f64, mut pdf: impl FnMut([f64; 3]) -> f64) -> (f64, f64) {
-    let mut rng = Rng::seed_from_u64(seed);
-    let (mut sum, mut sum2) = (0.0, 0.0);
-    for _ in 0..MEAN_SAMPLES {
-        let x = 1.0 / pdf([uniform(&mut rng), uniform(&mut rng), uniform(&mut rng)]);
-        sum += x;
-        sum2 += x * x;
-    }
-    let n = MEAN_SAMPLES as f64;
-    let mean = sum / n;
-    let var = (sum2 / n - mean * mean).max(0.0) * n / (n - 1.0);
-    (mean, (mean - want) / (var / n).sqrt().max(f64::MIN_POSITIVE))
-}
-
 fn sphere_from_inside_is_uniform_by_area<F: Float>() {
     let (c, r) = ([0.3, -0.2, 0.5], 2.0);
     let sphere = Sphere::<F>::new(Vec3::from_f64(c[0], c[1], c[2]), lit(r)).unwrap();
@@ -261,184 +181,6 @@ fn sphere_from_inside_is_uniform_by_area_f32() {
 #[test]
 fn sphere_from_inside_is_uniform_by_area_f64() {
     sphere_from_inside_is_uniform_by_area::<f64>();
-}
-
-/// The barycentrics of `p` in the triangle `v` (least squares, in `f64`).
-fn barycentrics(v: [[f64; 3]; 3], p: [f64; 3]) -> [f64; 3] {
-    let (e1, e2, q) = (sub(v[1], v[0]), sub(v[2], v[0]), sub(p, v[0]));
-    let (a, b, c) = (dot(e1, e1), dot(e1, e2), dot(e2, e2));
-    let (d, e) = (dot(q, e1), dot(q, e2));
-    let det = a * c - b * b;
-    let s = (c * d - b * e) / det;
-    let t = (a * e - b * d) / det;
-    [1.0 - s - t, s, t]
-}
-
-/// `(u, v)` of a point with barycentrics `b`, or `None` if it is off the triangle.
-fn triangle_uv(b: [f64; 3], tol: f64) -> Option<(f64, f64)> {
-    if b.iter().any(|&x| x < -tol) {
-        return None;
-    }
-    let rest = (1.0 - b[0]).max(f64::MIN_POSITIVE);
-    Some((1.0 - rest * rest, (b[1] / rest).clamp(0.0, 1.0)))
-}
-
-const TRIANGLE: [[f64; 3]; 3] = [[-1.0, 0.2, -3.0], [2.0, -0.5, -4.0], [0.3, 2.5, -3.5]];
-
-fn triangles_are_sampled_uniformly<F: Float>() {
-    let v = TRIANGLE.map(|p| Vec3::<F>::from_f64(p[0], p[1], p[2]));
-    let triangle = Triangle::new(v[0], v[1], v[2]).unwrap();
-    let at = Vec3::<F>::zero();
-    let tol = 64.0 * eps::<F>();
-    let verdict = chi2_uv(31, |u| {
-        let s = triangle.sample(at, u)?;
-        triangle_uv(barycentrics(TRIANGLE, s.point.to_f64()), tol)
-    });
-    println!("triangle {}: {verdict:?}", F::NAME);
-    assert!(!verdict.rejected(), "{}: {verdict:?}", F::NAME);
-}
-
-#[test]
-fn triangles_are_sampled_uniformly_f32() {
-    triangles_are_sampled_uniformly::<f32>();
-}
-
-#[test]
-fn triangles_are_sampled_uniformly_f64() {
-    triangles_are_sampled_uniformly::<f64>();
-}
-
-/// The wrong twin: `b₀` uniform, `b₁` uniform on what is left.
-#[test]
-fn the_triangle_test_rejects_a_wrong_sampler() {
-    let verdict = chi2_uv(32, |u| {
-        triangle_uv([u[0], (1.0 - u[0]) * u[1], (1.0 - u[0]) * (1.0 - u[1])], 0.0)
-    });
-    println!("b₀ uniform: {verdict:?}");
-    assert!(verdict.rejected());
-}
-
-/// The solid angle of the triangle `v` seen from `p` (Van Oosterom and Strackee 1983):
-/// `tan(Ω/2) = |a·(b×c)| / (|a||b||c| + (a·b)|c| + (a·c)|b| + (b·c)|a|)`.
-fn solid_angle(v: [[f64; 3]; 3], p: [f64; 3]) -> f64 {
-    let [a, b, c] = v.map(|x| sub(x, p));
-    let (la, lb, lc) = (len(a), len(b), len(c));
-    let num = dot(a, cross(b, c)).abs();
-    let den = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
-    2.0 * num.atan2(den)
-}
-
-fn triangle_density_is_per_solid_angle<F: Float>() {
-    let v = TRIANGLE.map(|p| Vec3::<F>::from_f64(p[0], p[1], p[2]));
-    let triangle = Triangle::new(v[0], v[1], v[2]).unwrap();
-    for (k, from) in [[0.0, 0.0, 0.0], [0.5, 0.8, -2.5], [5.0, -3.0, 1.0]]
-        .into_iter()
-        .enumerate()
-    {
-        let at = Vec3::<F>::from_f64(from[0], from[1], from[2]);
-        let want = solid_angle(TRIANGLE, from);
-        let (mean, z) = mean_inverse_density(40 + k as u64, want, |u| {
-            triangle.sample(at, u).unwrap().pdf.to_f64()
-        });
-        println!(
-            "triangle {} from {from:?}: mean 1/p = {mean}, Ω = {want}, z = {z}",
-            F::NAME
-        );
-        assert!(z.abs() < Z_MAX, "{} from {from:?}: z = {z}", F::NAME);
-    }
-}
-
-#[test]
-fn triangle_density_is_per_solid_angle_f32() {
-    triangle_density_is_per_solid_angle::<f32>();
-}
-
-#[test]
-fn triangle_density_is_per_solid_angle_f64() {
-    triangle_density_is_per_solid_angle::<f64>();
-}
-
-/// The wrong conversion, `p_A·d/|cos|`, is seen by the same test.
-#[test]
-fn the_solid_angle_test_rejects_a_wrong_conversion() {
-    let v = TRIANGLE.map(|p| Vec3::<f64>::from_f64(p[0], p[1], p[2]));
-    let triangle = Triangle::new(v[0], v[1], v[2]).unwrap();
-    let from = [0.5, 0.8, -2.5];
-    let at = Vec3::from_f64(from[0], from[1], from[2]);
-    let (_, z) = mean_inverse_density(41, solid_angle(TRIANGLE, from), |u| {
-        let s = triangle.sample(at, u).unwrap();
-        s.pdf / (s.point - at).length()
-    });
-    println!("d/|cos|: z = {z}");
-    assert!(z.abs() > Z_MAX);
-}
-
-/// Four disjoint triangles of areas 1, 2, 3 and 10 (right triangles with legs `√(2A)`).
-fn four_triangles<F: Float>() -> (Mesh<F>, [f64; 4]) {
-    let areas: [f64; 4] = [1.0, 2.0, 3.0, 10.0];
-    let mut vertices = Vec::new();
-    for (k, area) in areas.iter().enumerate() {
-        let (x, leg) = (10.0 * k as f64, (2.0 * area).sqrt());
-        vertices.extend([
-            Vec3::from_f64(x, 0.0, -5.0),
-            Vec3::from_f64(x + leg, 0.0, -5.0),
-            Vec3::from_f64(x, leg, -5.0),
-        ]);
-    }
-    let triangles = (0..4).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
-    (Mesh::new(vertices, triangles).unwrap(), areas)
-}
-
-/// Counts of which of `n` items `pick` chooses over `SAMPLES` uniform numbers, and the
-/// χ² p-value against `shares`.
-fn choice_p(seed: u64, shares: &[f64], mut pick: impl FnMut([f64; 3]) -> usize) -> f64 {
-    let mut counts = vec![0u64; shares.len()];
-    let mut rng = Rng::seed_from_u64(seed);
-    for _ in 0..SAMPLES {
-        counts[pick([uniform(&mut rng), uniform(&mut rng), uniform(&mut rng)])] += 1;
-    }
-    chi2_sf(chi2_against(&counts, shares), shares.len() as u32 - 1)
-}
-
-fn mesh_triangles_are_chosen_by_area<F: Float>() {
-    let (mesh, areas) = four_triangles::<F>();
-    let total: f64 = areas.iter().sum();
-    let shares = areas.map(|a| a / total);
-    assert!((mesh.area().unwrap().to_f64() - total).abs() < 1e-5 * total);
-    let at = Vec3::<F>::from_f64(1.0, 2.0, 3.0);
-    let p = choice_p(51, &shares, |u| {
-        let s = mesh.sample(at, u).unwrap();
-        // The density is the whole mesh's, 1/A, converted.
-        let v = s.point - at;
-        let want =
-            v.length_squared().to_f64() / (s.normal.dot(v).abs().to_f64() / v.length().to_f64()) / total;
-        assert!(
-            (s.pdf.to_f64() / want - 1.0).abs() < 1e3 * eps::<F>(),
-            "{}",
-            F::NAME
-        );
-        s.part as usize
-    });
-    println!("mesh parts {}: p = {p}", F::NAME);
-    assert!(p >= CHI2_ALPHA, "{}: p = {p}", F::NAME);
-}
-
-#[test]
-fn mesh_triangles_are_chosen_by_area_f32() {
-    mesh_triangles_are_chosen_by_area::<f32>();
-}
-
-#[test]
-fn mesh_triangles_are_chosen_by_area_f64() {
-    mesh_triangles_are_chosen_by_area::<f64>();
-}
-
-#[test]
-fn the_choice_test_rejects_a_uniform_choice_of_triangles() {
-    let shares = [1.0, 2.0, 3.0, 10.0].map(|a| a / 16.0);
-    let p = choice_p(52, &shares, |u| ((u[0] * 4.0) as usize).min(3));
-    println!("uniform triangles: p = {p}");
-    assert!(p < CHI2_ALPHA);
 }
 
 /// Five sampled emitters of different powers, and two that are not sampled (a plane, and
@@ -517,7 +259,7 @@ fn density_of_a_hit_is_the_sampled_one<F: Float>() {
         ("mesh", &mesh, [1.0, 2.0, 3.0]),
     ];
     let tol = 1e3 * eps::<F>();
-    let mut rng = Rng::seed_from_u64(71);
+    let mut rng = Xoshiro256PlusPlus::seed_from_u64(71);
     for (name, shape, from) in shapes {
         let at = Vec3::<F>::from_f64(from[0], from[1], from[2]);
         let mut missed = 0;
