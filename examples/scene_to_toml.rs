@@ -178,6 +178,14 @@ fn material(m: &MaterialKind<f64>) -> (&'static str, MaterialSpec) {
                 },
             },
         ),
+        MaterialKind::Emissive(m) => (
+            "light",
+            MaterialSpec::Emissive {
+                radiance: m.emission().radiance().to_f64(),
+                two_sided: m.emission().is_two_sided(),
+                albedo: (m.albedo() != Vec3::zero()).then(|| m.albedo().to_f64()),
+            },
+        ),
     }
 }
 

@@ -60,9 +60,13 @@ pub use error::{Error, Result};
 pub use float::{Float, lit};
 pub use image::{Encoding, Image, Image16};
 pub use light::PointLight;
-pub use material::{Dielectric, Lambertian, Material, MaterialKind, Mirror, Scatter, SharedMaterial};
+pub use material::{
+    Dielectric, Emission, Emissive, Lambertian, Material, MaterialKind, Mirror, Scatter, SharedMaterial,
+};
 pub use ray::Ray;
-pub use render::{Rect, Render, RenderSettings, RenderStats, Renderer, render, render_reference};
+pub use render::{
+    LightSampling, Rect, Render, RenderSettings, RenderStats, Renderer, render, render_reference,
+};
 pub use sampling::DefaultRng;
 pub use scene::{Acceleration, DynScene, EnumScene, Layout, Object, Scene};
 pub use shape::{Hit, Hittable, Intersection, Mesh, Plane, ShapeKind, Sphere, Triangle};
@@ -76,8 +80,9 @@ pub use rand;
 pub mod prelude {
     pub use crate::image::{read_ppm, write_png, write_ppm};
     pub use crate::{
-        Background, Camera, Color, Dielectric, DynScene, Encoding, EnumScene, Error, Float, Hittable,
-        Lambertian, Layout, LookAtCamera, Material, MaterialKind, Mesh, Mirror, Plane, PointLight, Ray, Rect,
-        RenderSettings, Renderer, Scene, ScreenCamera, ShapeKind, Sphere, Triangle, Vec3, lit, render,
+        Background, Camera, Color, Dielectric, DynScene, Emissive, Encoding, EnumScene, Error, Float,
+        Hittable, Lambertian, Layout, LightSampling, LookAtCamera, Material, MaterialKind, Mesh, Mirror,
+        Plane, PointLight, Ray, Rect, RenderSettings, Renderer, Scene, ScreenCamera, ShapeKind, Sphere,
+        Triangle, Vec3, lit, render,
     };
 }

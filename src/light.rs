@@ -1,4 +1,12 @@
-//! Point lights.
+//! Lights: point lights, and the scene's emitting surfaces as lights to sample
+//! ([`Emitters`], chosen by power) with the weights that combine two ways of finding
+//! their light ([`power_heuristic`]).
+
+mod emitters;
+mod mis;
+
+pub use emitters::Emitters;
+pub use mis::power_heuristic;
 
 use crate::error::Result;
 use crate::float::Float;

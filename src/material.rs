@@ -2,10 +2,12 @@
 //! and [`MaterialKind`], the enum fast path over the concrete materials.
 
 mod dielectric;
+mod emissive;
 mod lambertian;
 mod mirror;
 
 pub use dielectric::{Dielectric, Reflectance};
+pub use emissive::{Emission, Emissive};
 pub use lambertian::{CosineSampler, Lambertian};
 pub use mirror::Mirror;
 
@@ -34,9 +36,20 @@ pub trait Material<F: Float, R: Rng + ?Sized> {
     fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>>;
 
     /// For an ideal diffuse (Lambertian) surface, its albedo `A`: the renderer then adds
-    /// direct light from point lights with the BRDF `A/π`. `None` for other surfaces.
+    /// direct light from point lights and from sampled emitters with the BRDF `A/π`, and
+    /// weighs the light its scattered ray finds on an emitter as that of a direction drawn
+    /// with density `cos θ/π` (multiple importance sampling). `None` for other surfaces,
+    /// whose scattered rays count the light they find in full.
     #[inline]
     fn diffuse_albedo(&self) -> Option<Color<F>> {
+        None
+    }
+
+    /// The light this surface gives off, if any (an area light, [`Emissive`]): a ray that
+    /// hits it brings back `L_e` besides what it scatters. `None` (the default) for
+    /// surfaces that give off no light.
+    #[inline]
+    fn emission(&self) -> Option<Emission<F>> {
         None
     }
 }
@@ -51,6 +64,10 @@ macro_rules! forward_material {
             #[inline]
             fn diffuse_albedo(&self) -> Option<Color<F>> {
                 (**self).diffuse_albedo()
+            }
+            #[inline]
+            fn emission(&self) -> Option<Emission<F>> {
+                (**self).emission()
             }
         }
     )*};
@@ -88,6 +105,10 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for SharedMaterial<F, R> {
     fn diffuse_albedo(&self) -> Option<Color<F>> {
         self.0.diffuse_albedo()
     }
+    #[inline]
+    fn emission(&self) -> Option<Emission<F>> {
+        self.0.emission()
+    }
 }
 
 impl<F, R: ?Sized> std::fmt::Debug for SharedMaterial<F, R> {
@@ -105,6 +126,8 @@ pub enum MaterialKind<F> {
     Lambertian(Lambertian<F>),
     /// A refracting [`Dielectric`] (glass).
     Dielectric(Dielectric<F>),
+    /// A light-giving [`Emissive`] surface.
+    Emissive(Emissive<F>),
 }
 
 impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
@@ -114,6 +137,7 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
             Self::Mirror(m) => Material::<F, R>::scatter(m, ray, hit, rng),
             Self::Lambertian(m) => m.scatter(ray, hit, rng),
             Self::Dielectric(m) => m.scatter(ray, hit, rng),
+            Self::Emissive(m) => m.scatter(ray, hit, rng),
         }
     }
     #[inline]
@@ -122,6 +146,14 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
             Self::Mirror(m) => Material::<F, R>::diffuse_albedo(m),
             Self::Lambertian(m) => Material::<F, R>::diffuse_albedo(m),
             Self::Dielectric(m) => Material::<F, R>::diffuse_albedo(m),
+            Self::Emissive(m) => Material::<F, R>::diffuse_albedo(m),
+        }
+    }
+    #[inline]
+    fn emission(&self) -> Option<Emission<F>> {
+        match self {
+            Self::Emissive(m) => Material::<F, R>::emission(m),
+            _ => None,
         }
     }
 }
@@ -144,6 +176,12 @@ impl<F> From<Dielectric<F>> for MaterialKind<F> {
     }
 }
 
+impl<F> From<Emissive<F>> for MaterialKind<F> {
+    fn from(m: Emissive<F>) -> Self {
+        Self::Emissive(m)
+    }
+}
+
 impl<F: Float> MaterialKind<F> {
     /// This material in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
     pub fn cast<G: Float>(&self) -> crate::error::Result<MaterialKind<G>> {
@@ -156,6 +194,7 @@ impl<F: Float> MaterialKind<F> {
                 .with_albedo(m.albedo().cast())?
                 .with_reflectance(m.reflectance())
                 .into(),
+            Self::Emissive(m) => m.cast()?.into(),
         })
     }
 }

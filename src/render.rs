@@ -4,6 +4,7 @@
 //! advance together, bounce by bounce (`batch`), on every core (rayon).
 
 mod batch;
+mod direct;
 mod progress;
 mod reference;
 mod seed;
@@ -13,7 +14,7 @@ mod trace;
 pub use crate::image::Rect;
 pub use reference::render_reference;
 pub use seed::sample_seed;
-pub use settings::RenderSettings;
+pub use settings::{LightSampling, RenderSettings};
 pub use trace::Tracer;
 
 use crate::camera::Camera;
@@ -146,6 +147,12 @@ impl<'a, F: Float, S, M, C: Camera<F>, R> Renderer<'a, F, S, M, C, R> {
         self
     }
 
+    /// How the light of emitting surfaces is found ([`RenderSettings::light_sampling`]).
+    pub fn light_sampling(mut self, light_sampling: LightSampling) -> Self {
+        self.settings.light_sampling = light_sampling;
+        self
+    }
+
     /// Shows a progress bar on stderr when it is a terminal.
     pub fn progress(mut self, progress: bool) -> Self {
         self.settings.progress = progress;
@@ -207,7 +214,8 @@ where
             .par_chunks_mut(band)
             .enumerate()
             .map_init(Batch::<F, R>::new, |batch, (k, pixels)| {
-                let mut tracer = Tracer::new(self.scene, settings.max_depth);
+                let mut tracer =
+                    Tracer::new(self.scene, settings.max_depth).light_sampling(settings.light_sampling);
                 let at = |i: usize| (tile.x + i % tile.width, tile.y + (k * band + i) / tile.width);
                 batch.render(&mut tracer, camera, settings, at, pixels);
                 progress.inc(pixels.len().div_ceil(tile.width) as u64);

@@ -104,6 +104,33 @@ pub fn orthonormal_basis<F: Float>(n: Vec3<F>) -> (Vec3<F>, Vec3<F>) {
     (t, b)
 }
 
+/// A uniform point of a triangle from `u ∈ [0, 1)²`, as barycentric weights `[b₀, b₁, b₂]`
+/// of its vertices (pbrt-v4's `SampleUniformTriangle`, Heitz's low-distortion map): if
+/// `u₀ < u₁`, `b₀ = u₀/2`, `b₁ = u₁ − b₀`, else `b₁ = u₁/2`, `b₀ = u₀ − b₁`; `b₂ = 1 − b₀ − b₁`.
+/// Each half of the square maps affinely onto half of the triangle, so the density is
+/// uniform (`1/area`), with no square root.
+#[inline]
+pub fn uniform_triangle(u: [f64; 2]) -> [f64; 3] {
+    let (b0, b1) = if u[0] < u[1] {
+        let b0 = u[0] / 2.0;
+        (b0, u[1] - b0)
+    } else {
+        let b1 = u[1] / 2.0;
+        (u[0] - b1, b1)
+    };
+    [b0, b1, 1.0 - b0 - b1]
+}
+
+/// A uniform unit vector from `u ∈ [0, 1)²` (Archimedes: the height is uniform):
+/// `z = 1 − 2u₀`, `φ = 2πu₁`, `(√(1 − z²) cos φ, √(1 − z²) sin φ, z)`; density `1/4π`.
+#[inline]
+pub fn uniform_sphere(u: [f64; 2]) -> [f64; 3] {
+    let z = 1.0 - 2.0 * u[0];
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    let (sin_p, cos_p) = (std::f64::consts::TAU * u[1]).sin_cos();
+    [r * cos_p, r * sin_p, z]
+}
+
 /// The offset of a jittered sample inside its pixel: a uniform point of
 /// `[−½, ½)²`, in pixel units.
 #[inline]
@@ -164,6 +191,19 @@ mod tests {
             let d = cosine_direction(n, &mut rng);
             assert!(d.dot(n) >= 0.0 && (d.length() - 1.0).abs() < 1e-14);
         }
+    }
+
+    #[test]
+    fn triangle_and_sphere_points_are_valid() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(9);
+        for _ in 0..10_000 {
+            let u = [uniform(&mut rng), uniform(&mut rng)];
+            let b = uniform_triangle(u);
+            assert!(b.iter().all(|&x| x >= 0.0) && (b.iter().sum::<f64>() - 1.0).abs() < 1e-15);
+            let [x, y, z] = uniform_sphere(u);
+            assert!(((x * x + y * y + z * z) - 1.0).abs() < 4.0 * f64::EPSILON);
+        }
+        assert_eq!(uniform_triangle([0.0, 0.0]), [0.0, 0.0, 1.0]);
     }
 
     #[test]

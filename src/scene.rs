@@ -5,8 +5,8 @@ mod layout;
 
 use crate::background::Background;
 use crate::float::Float;
-use crate::light::PointLight;
-use crate::material::{MaterialKind, SharedMaterial};
+use crate::light::{Emitters, PointLight};
+use crate::material::{Material, MaterialKind, SharedMaterial};
 use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, ShapeKind};
 use index::Index;
@@ -44,6 +44,7 @@ pub struct Scene<F, S, M> {
     background: Background<F>,
     acceleration: Acceleration,
     index: OnceLock<Index<F>>,
+    emitters: OnceLock<Emitters>,
     _scalar: PhantomData<F>,
 }
 
@@ -95,6 +96,7 @@ impl<F: Float> EnumScene<F> {
                 MaterialKind::Mirror(m) => Arc::new(m).into(),
                 MaterialKind::Lambertian(m) => Arc::new(m).into(),
                 MaterialKind::Dielectric(m) => Arc::new(m).into(),
+                MaterialKind::Emissive(m) => Arc::new(m).into(),
             };
             scene.add(shape, material);
         }
@@ -114,6 +116,7 @@ impl<F: Float, S, M> Scene<F, S, M> {
             background,
             acceleration: Acceleration::Auto,
             index: OnceLock::new(),
+            emitters: OnceLock::new(),
             _scalar: PhantomData,
         }
     }
@@ -137,6 +140,7 @@ impl<F: Float, S, M> Scene<F, S, M> {
             material: material.into(),
         });
         self.index = OnceLock::new();
+        self.emitters = OnceLock::new();
         self
     }
 
@@ -179,21 +183,39 @@ impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
     /// so the answer never depends on the acceleration structure.
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &M)> {
-        let (hit, object) = self.index().hit(&self.objects, ray, t_max)?;
+        let (hit, object) = self.hit_object(ray, t_max)?;
         Some((hit, &object.material))
     }
 
-    /// [`Scene::hit`] with no bound for each of `rays`, handed to `each(i, hit)` in the
-    /// rays' order: the same answers, found for the whole batch at once (`near` is
+    /// [`Scene::hit`] with the whole object hit, shape and material.
+    #[inline]
+    pub fn hit_object(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &Object<S, M>)> {
+        self.index().hit(&self.objects, ray, t_max)
+    }
+
+    /// [`Scene::hit_object`] with no bound for each of `rays`, handed to `each(i, hit)` in
+    /// the rays' order: the same answers, found for the whole batch at once (`near` is
     /// scratch space).
     #[inline]
     pub(crate) fn hit_all<'s>(
         &'s self,
         rays: &[Ray<F>],
         near: &mut Nearests<F>,
-        each: impl FnMut(usize, Option<(Hit<F>, &'s M)>),
+        each: impl FnMut(usize, Option<(Hit<F>, &'s Object<S, M>)>),
     ) {
         self.index().hit_all(&self.objects, rays, near, each);
+    }
+
+    /// The objects that give off light and are sampled as lights, with the probability of
+    /// each ([`Emitters`]); built on the first call after a change. `R` is any generator
+    /// the materials accept (emission does not depend on it).
+    #[inline]
+    pub fn emitters<R: Rng + ?Sized>(&self) -> &Emitters
+    where
+        M: Material<F, R>,
+    {
+        self.emitters
+            .get_or_init(|| Emitters::new::<F, S, M, R>(&self.objects))
     }
 
     /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.

@@ -3,6 +3,7 @@
 
 mod mesh;
 mod plane;
+mod sample;
 mod sphere;
 mod sphere4;
 mod triangle;
@@ -10,6 +11,7 @@ mod triangle4;
 
 pub use mesh::Mesh;
 pub use plane::Plane;
+pub use sample::{SurfaceSample, area_to_solid_angle, hit_solid_angle};
 pub use sphere::{Sphere, TEXTBOOK_T_MIN, textbook_sphere_hit, textbook_sphere_record, textbook_sphere_t};
 // Public, hidden: only for the packet benches in benches/primitives.rs.
 #[doc(hidden)]
@@ -168,6 +170,12 @@ impl<F: Float> Intersection<F> {
 ///   `Sphere`'s hit record does (`p ← C + (p − C)·r/|p − C|`, then `γ(6)|p − C| + γ(2)|p|`
 ///   per component, pbrt-v4 §6.8.5).
 ///
+/// # Sampling as a light
+/// An emissive shape that answers [`area`](Hittable::area), [`sample`](Hittable::sample)
+/// and [`pdf`](Hittable::pdf) (spheres, triangles and meshes do) is also sampled directly
+/// from the surfaces it lights (next-event estimation); one that keeps the defaults is lit
+/// only by rays that happen to hit it. `pdf` must be the density `sample` draws with.
+///
 /// An error of zero does not move the origin at all: the rounded hit point lies on
 /// either side of the true surface about as often, and from the wrong side the new ray
 /// hits the surface it is leaving, at a tiny `t`. The image shows it as dark speckles
@@ -224,6 +232,31 @@ pub trait Hittable<F: Float> {
         let _ = part;
         self.intersect(ray, t_max)
     }
+
+    /// The surface area, if this shape can be sampled as a light; `None` (the default)
+    /// otherwise.
+    #[inline]
+    fn area(&self) -> Option<F> {
+        None
+    }
+
+    /// A point of the surface drawn for the point `from` from three uniform numbers
+    /// `u ∈ [0, 1)³`, with the density of its direction from `from` per unit solid
+    /// angle; `None` if this shape cannot be sampled (the default).
+    #[inline]
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        let _ = (from, u);
+        None
+    }
+
+    /// The density per unit solid angle with which [`sample`](Hittable::sample), called
+    /// for `ray.origin`, draws the direction of `ray`, a ray that hits this shape at
+    /// `hit`; 0 if this shape cannot be sampled (the default).
+    #[inline]
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        let _ = (ray, hit);
+        F::zero()
+    }
 }
 
 macro_rules! forward_hittable {
@@ -260,6 +293,18 @@ macro_rules! forward_hittable {
             #[inline]
             fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
                 (**self).intersect_part(part, ray, t_max)
+            }
+            #[inline]
+            fn area(&self) -> Option<F> {
+                (**self).area()
+            }
+            #[inline]
+            fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+                (**self).sample(from, u)
+            }
+            #[inline]
+            fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+                (**self).pdf(ray, hit)
             }
         }
     )*};
@@ -328,6 +373,18 @@ impl<F: Float> Hittable<F> for ShapeKind<F> {
     #[inline]
     fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
         each_shape!(self, s => s.intersect_part(part, ray, t_max))
+    }
+    #[inline]
+    fn area(&self) -> Option<F> {
+        each_shape!(self, s => s.area())
+    }
+    #[inline]
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        each_shape!(self, s => s.sample(from, u))
+    }
+    #[inline]
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        each_shape!(self, s => s.pdf(ray, hit))
     }
 }
 

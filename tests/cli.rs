@@ -162,8 +162,33 @@ fn check_and_advise_describe_the_scene() {
     expect(
         &run(&["check", s.to_str().unwrap()]),
         0,
-        &["valid", "planes", "triangles", "acceleration"],
+        &["valid", "planes", "triangles", "acceleration", "emitters: none"],
     );
+    let s = scene("cornell_box.toml");
+    expect(
+        &run(&["check", s.to_str().unwrap()]),
+        0,
+        &[
+            "valid",
+            "36 triangles (meshes: 8)",
+            "emitters: 1 objects give off light, 1 of them sampled",
+        ],
+    );
+    let dir = folder("cornell");
+    let out = dir.join("cornell.png");
+    let args = [
+        "render",
+        s.to_str().unwrap(),
+        "--width",
+        "16",
+        "--spp",
+        "2",
+        "--quiet",
+        "--out",
+    ];
+    expect(&run(&[&args[..], &[out.to_str().unwrap()]].concat()), 0, &[]);
+    assert!(out.exists());
+    fs::remove_dir_all(dir).unwrap();
     let s = scene("four_mirrors.toml");
     expect(&run(&["advise", s.to_str().unwrap()]), 0, &["advice: f32"]);
     expect(&run(&["--version"]), 0, &[env!("CARGO_PKG_VERSION")]);

@@ -1,7 +1,10 @@
-//! The fast renderer gives the reference renderer's bytes: every example scene, in f32 and
-//! f64, through both dispatch paths, at 1, 2 and 3 samples per pixel, on 1 and 2 threads,
-//! whole and in tiles. The reference renderer calls the spec's recursive `trace` once per
-//! sample, so this is the test that the batched, parallel renderer renders the spec.
+//! The fast renderer gives the reference renderer's bytes: every example scene, and two
+//! scenes lit by emitting surfaces (the Cornell box, and spheres, a triangle and a plane
+//! giving off light beside a point light, mirror and glass), in f32 and f64, through both
+//! dispatch paths, at 1, 2 and 3 samples per pixel, on 1 and 2 threads, with emitters
+//! sampled or not, whole and in tiles. The reference renderer calls the spec's recursive
+//! `trace` once per sample, so this is the test that the batched, parallel renderer
+//! renders the spec.
 
 #[path = "../examples/scenes/mod.rs"]
 mod scenes;
@@ -32,6 +35,20 @@ fn examples<F: Float>() -> Vec<(&'static str, Built<F>)> {
     ]
 }
 
+/// The scenes lit by emitting surfaces, small: the Cornell box from its scene file, and
+/// spheres, a triangle and a plane giving off light.
+fn emissive<F: Float>() -> Vec<(&'static str, Built<F>)> {
+    let (cornell, camera, _) = scenes::cornell_box::<F>(20).unwrap();
+    vec![
+        ("cornell_box", (cornell, Box::new(camera))),
+        ("area_lights", spec_camera(scenes::area_lights())),
+    ]
+}
+
+fn spec_camera<F: Float>(scene: raytrace::Result<EnumScene<F>>) -> Built<F> {
+    (scene.unwrap(), Box::new(ScreenCamera::new(36, 18).unwrap()))
+}
+
 fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -56,12 +73,35 @@ where
     S: Layout<F> + Sync,
     M: Material<F, DefaultRng> + Sync,
 {
-    let renderer = Renderer::new(scene, &camera).spp(spp).max_depth(12).seed(7);
+    check_with(name, scene, camera, spp, LightSampling::Mis);
+}
+
+/// [`check`] with emitters' light found by `light_sampling`.
+fn check_with<F: Float, S, M>(
+    name: &str,
+    scene: &Scene<F, S, M>,
+    camera: &(dyn Camera<F> + Sync),
+    spp: u32,
+    light_sampling: LightSampling,
+) where
+    S: Layout<F> + Sync,
+    M: Material<F, DefaultRng> + Sync,
+{
+    let renderer = Renderer::new(scene, &camera)
+        .spp(spp)
+        .max_depth(12)
+        .seed(7)
+        .light_sampling(light_sampling);
     let reference = renderer.render_reference().unwrap();
     for threads in [1, 2] {
         let fast = in_pool(threads, || renderer.render().unwrap());
         let at = first_difference(&fast.image, &reference.image);
-        assert_eq!(at, None, "{name}, {}, {spp} spp, {threads} threads", F::NAME);
+        assert_eq!(
+            at,
+            None,
+            "{name}, {}, {spp} spp, {threads} threads, {light_sampling:?}",
+            F::NAME
+        );
         assert_eq!(
             fast.stats.rays,
             reference.stats.rays,
@@ -88,6 +128,37 @@ fn the_fast_renderer_gives_the_references_bytes_in_f32() {
 #[test]
 fn the_fast_renderer_gives_the_references_bytes_in_f64() {
     every_example::<f64>();
+}
+
+fn every_emissive_scene<F: Float>() {
+    for (name, (scene, camera)) in emissive::<F>() {
+        assert!(
+            !scene.emitters::<DefaultRng>().is_empty(),
+            "{name} samples emitters"
+        );
+        for spp in [1, 2, 3] {
+            check(name, &scene, &*camera, spp);
+            check(name, &scene.to_dyn::<DefaultRng>(), &*camera, spp);
+        }
+        check_with(name, &scene, &*camera, 2, LightSampling::Bsdf);
+        check_with(
+            name,
+            &scene.to_dyn::<DefaultRng>(),
+            &*camera,
+            2,
+            LightSampling::Bsdf,
+        );
+    }
+}
+
+#[test]
+fn the_fast_renderer_gives_the_references_bytes_with_emitters_in_f32() {
+    every_emissive_scene::<f32>();
+}
+
+#[test]
+fn the_fast_renderer_gives_the_references_bytes_with_emitters_in_f64() {
+    every_emissive_scene::<f64>();
 }
 
 /// A tile of the fast render is the same pixels of the reference's whole image.
@@ -156,4 +227,20 @@ fn the_comparison_sees_a_different_image() {
         .render()
         .unwrap();
     assert!(first_difference(&shallower.image, &reference.image).is_some());
+}
+
+/// With emitters, the comparison sees the other way of finding their light.
+#[test]
+fn the_comparison_sees_light_found_another_way() {
+    let (scene, camera) = emissive::<f32>().swap_remove(0).1;
+    let camera = &*camera;
+    let renderer = Renderer::new(&scene, &camera).spp(2).seed(7);
+    let mis = renderer.render_reference().unwrap();
+    let bsdf = Renderer::new(&scene, &camera)
+        .spp(2)
+        .seed(7)
+        .light_sampling(LightSampling::Bsdf)
+        .render()
+        .unwrap();
+    assert!(first_difference(&bsdf.image, &mis.image).is_some());
 }

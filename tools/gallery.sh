@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders the README's pictures into docs/images/: every example at its default settings,
-# four_mirrors 800 pixels wide and the others 400, and the dragon scene file (its mesh
-# comes from tools/fetch_meshes.sh).
+# four_mirrors 800 pixels wide and the others 400, the Cornell box scene file, and the
+# dragon scene file (its mesh comes from tools/fetch_meshes.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=$(mktemp -d)
@@ -13,5 +13,6 @@ for spec in "four_mirrors 800" matte_spheres glass plane_and_triangles point_lig
     cp "$out/$name.png" "docs/images/$name.png"
     echo "docs/images/$name.png"
 done
+target/release/raytrace render scenes/cornell_box.toml --quiet --out docs/images/cornell_box.png
 bash tools/fetch_meshes.sh >/dev/null
 target/release/raytrace render scenes/dragon.toml --quiet --out docs/images/dragon.png

@@ -183,3 +183,51 @@ pub fn plane_and_triangles<F: Float>() -> raytrace::Result<EnumScene<F>> {
     scene.add(Sphere::new(p(3.5, 0.2, -6.0), lit(1.0))?, matte(0.7, 0.3, 0.6)?);
     Ok(scene)
 }
+
+/// Every way light leaves a surface, for the spec's camera: a sphere lamp, a two-sided
+/// emitting triangle that also reflects, an emitting plane (which is never sampled, only
+/// hit), a point light, and a mirror and a glass sphere that see the lamps only through
+/// the rays they reflect and refract, on a matte ground under a dim solid background.
+pub fn area_lights<F: Float>() -> raytrace::Result<EnumScene<F>> {
+    let v = |x, y, z| Vec3::<F>::from_f64(x, y, z);
+    let mut scene = EnumScene::new(Background::solid(v(0.02, 0.02, 0.03))?);
+    scene.add(
+        Sphere::new(v(0.0, -101.0, -3.0), lit(100.0))?,
+        Lambertian::new(v(0.6, 0.6, 0.5))?,
+    );
+    scene.add(
+        Sphere::new(v(-1.2, 0.0, -3.0), lit(0.6))?,
+        Mirror::new(v(0.9, 0.9, 0.9))?,
+    );
+    scene.add(
+        Sphere::new(v(0.2, -0.4, -2.5), lit(0.5))?,
+        Dielectric::new(lit(1.5))?,
+    );
+    scene.add(
+        Sphere::new(v(1.3, 0.6, -3.5), lit(0.3))?,
+        Emissive::new(v(8.0, 6.0, 3.0))?,
+    );
+    let panel = Triangle::new(v(-1.5, 1.5, -4.0), v(0.5, 1.5, -4.0), v(-0.5, 2.5, -3.0))?;
+    let panel_light = Emissive::new(v(1.0, 2.0, 4.0))?
+        .two_sided(true)
+        .with_albedo(v(0.5, 0.5, 0.5))?;
+    scene.add(panel, panel_light);
+    scene.add(
+        Plane::new(v(0.0, 0.0, -8.0), v(0.0, 0.0, 1.0))?,
+        Emissive::new(v(0.2, 0.1, 0.1))?,
+    );
+    scene.add_light(PointLight::new(v(2.0, 3.0, -1.0), v(4.0, 4.0, 4.0))?);
+    Ok(scene)
+}
+
+/// The Cornell box of `scenes/cornell_box.toml` (Mitsuba 3's), `width` pixels square, its
+/// scene and camera in `F`, and its render settings.
+pub fn cornell_box<F: Float>(
+    width: usize,
+) -> raytrace::Result<(EnumScene<F>, raytrace::scene_file::FileCamera<F>, RenderSettings)> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.toml");
+    let mut file = raytrace::scene_file::SceneFile::load(&path)?;
+    file.render_mut().width = width;
+    let built = file.build::<F>()?;
+    Ok((built.scene, built.camera, built.settings))
+}

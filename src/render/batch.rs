@@ -12,11 +12,13 @@
 //! - each bounce's `(direct, attenuation)` is logged, and once every path has ended the
 //!   logs are folded back from the last bounce, `c ← saturate(direct + attenuation ∘ c)`:
 //!   the recursion's own arithmetic, in its own order, for each path;
+//! - each ray travels with the state the recursion passes down with it (how it left its
+//!   last vertex, for the weight of the emitted light it finds);
 //! - each pixel's samples are summed in the reference's order, sample 0 first.
 
 use super::RenderSettings;
 use super::reference::{camera_ray, mean, pixel_stream, sample_rng};
-use super::trace::{Step, Tracer, saturate};
+use super::trace::{Arrival, Step, Tracer, saturate};
 use crate::camera::Camera;
 use crate::float::Float;
 use crate::material::Material;
@@ -38,11 +40,14 @@ pub(super) struct Batch<F, R> {
     pixels_at: Vec<(usize, usize, u64)>,
     /// Each pixel's sum of sample colours.
     sums: Vec<Color<F>>,
-    /// The rays still travelling, and the pixel of each one's path.
+    /// The rays still travelling, the pixel of each one's path, and how each left its
+    /// last vertex.
     rays: Vec<Ray<F>>,
     pixels: Vec<u32>,
+    arrivals: Vec<Arrival<F>>,
     next_rays: Vec<Ray<F>>,
     next_pixels: Vec<u32>,
+    next_arrivals: Vec<Arrival<F>>,
     near: Nearests<F>,
     /// For each bounce, the paths that went on from it, in the rays' order.
     logs: Vec<Vec<Bounce<F>>>,
@@ -59,8 +64,10 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             sums: Vec::new(),
             rays: Vec::new(),
             pixels: Vec::new(),
+            arrivals: Vec::new(),
             next_rays: Vec::new(),
             next_pixels: Vec::new(),
+            next_arrivals: Vec::new(),
             near: Nearests::default(),
             logs: Vec::new(),
             ends: Vec::new(),
@@ -104,6 +111,8 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
                 self.rays.push(camera_ray(camera, x, y, spp, rng));
                 self.pixels.push(i as u32);
             }
+            self.arrivals.clear();
+            self.arrivals.resize(self.rays.len(), Arrival::Unweighted);
             self.trace(tracer);
             for (sum, &c) in self.sums.iter_mut().zip(&self.ends) {
                 *sum = *sum + c;
@@ -133,22 +142,25 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             tracer.rays += self.rays.len() as u64;
             self.next_rays.clear();
             self.next_pixels.clear();
+            self.next_arrivals.clear();
             // Each ray is shaded as soon as its hit is known, in the rays' order.
-            let (rays, pixels) = (&self.rays, &self.pixels);
+            let (rays, pixels, arrivals) = (&self.rays, &self.pixels, &self.arrivals);
             scene.hit_all(rays, &mut self.near, |i, hit| {
                 let pixel = pixels[i];
                 let rng = &mut self.rngs[pixel as usize];
-                match tracer.shade(&rays[i], hit, depth as u32, rng) {
+                match tracer.shade(&rays[i], hit, depth as u32, arrivals[i], rng) {
                     Step::Done(colour) => self.ends[pixel as usize] = colour,
-                    Step::Go(next, direct, attenuation) => {
+                    Step::Go(next, direct, attenuation, arrival) => {
                         log.push((pixel, direct, attenuation));
                         self.next_rays.push(next);
                         self.next_pixels.push(pixel);
+                        self.next_arrivals.push(arrival);
                     }
                 }
             });
             std::mem::swap(&mut self.rays, &mut self.next_rays);
             std::mem::swap(&mut self.pixels, &mut self.next_pixels);
+            std::mem::swap(&mut self.arrivals, &mut self.next_arrivals);
             depth += 1;
         }
         // Each path's bounces fold back from its last: bounce by bounce from the deepest,

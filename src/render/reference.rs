@@ -41,7 +41,7 @@ where
     tile.check_inside(camera.width(), camera.height())?;
     let start = Instant::now();
     let mut image = Image::new(tile.width, tile.height)?;
-    let mut tracer = Tracer::new(scene, settings.max_depth);
+    let mut tracer = Tracer::new(scene, settings.max_depth).light_sampling(settings.light_sampling);
     for (i, out) in image.pixels_mut().iter_mut().enumerate() {
         let (x, y) = (tile.x + i % tile.width, tile.y + i / tile.width);
         let stream = pixel_stream(settings, camera, x, y);

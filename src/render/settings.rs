@@ -15,6 +15,22 @@ pub struct RenderSettings {
     pub seed: u64,
     /// Show a progress bar on stderr when it is a terminal.
     pub progress: bool,
+    /// How the light of emitting surfaces is found (next-event estimation with multiple
+    /// importance sampling by default).
+    pub light_sampling: LightSampling,
+}
+
+/// How the light of emitting surfaces ([`Emissive`](crate::material::Emissive)) is found.
+/// Both give the same image in expectation; point lights are sampled either way.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LightSampling {
+    /// At every matte hit one emitter is sampled directly, with a shadow ray
+    /// (next-event estimation), and that light and the light the scattered ray finds are
+    /// weighted by the power heuristic (multiple importance sampling). The default.
+    #[default]
+    Mis,
+    /// Only scattered rays find emitters: the plain path tracer, noisy for small lights.
+    Bsdf,
 }
 
 impl RenderSettings {
@@ -35,6 +51,7 @@ impl RenderSettings {
             max_depth,
             seed,
             progress: false,
+            light_sampling: LightSampling::Mis,
         };
         s.validate()?;
         Ok(s)
@@ -66,6 +83,7 @@ impl Default for RenderSettings {
             max_depth: 10,
             seed: 0,
             progress: false,
+            light_sampling: LightSampling::Mis,
         }
     }
 }

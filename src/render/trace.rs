@@ -1,13 +1,15 @@
 //! The specification's recursive trace: what one ray brings back.
 
-use crate::float::{Float, lit};
-use crate::material::Material;
+use super::settings::LightSampling;
+use crate::float::Float;
+use crate::light::{Emitters, power_heuristic};
+use crate::material::{Emission, Material};
 use crate::ray::Ray;
-use crate::scene::Layout;
-use crate::scene::Scene;
-use crate::shape::{Hit, offset_ray_origin};
-use crate::vec3::Color;
+use crate::scene::{Layout, Object, Scene};
+use crate::shape::Hit;
+use crate::vec3::{Color, Vec3};
 use rand::Rng;
+use std::f64::consts::FRAC_1_PI;
 
 /// Caps each channel at the largest finite value. A light almost touching a surface can
 /// make `I·cos θ/d²` overflow (in f32 from `d ≈ 10⁻¹⁹`); an infinite channel would then
@@ -19,27 +21,52 @@ pub(crate) fn saturate<F: Float>(c: Color<F>) -> Color<F> {
     c.map(|x| if x > F::max_value() { F::max_value() } else { x })
 }
 
-/// One bounce's outcome: the ray's colour, or the next ray with the direct light and the
-/// attenuation that combine with the colour it brings back.
+/// One bounce's outcome: the ray's colour, or the next ray with the light this bounce adds
+/// and the attenuation that combine with the colour it brings back, and how it was drawn.
 pub(super) enum Step<F> {
     Done(Color<F>),
-    Go(Ray<F>, Color<F>, Color<F>),
+    Go(Ray<F>, Color<F>, Color<F>, Arrival<F>),
+}
+
+/// How a ray left the vertex before it: the per-path state the weight of the emitted
+/// light it finds depends on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Arrival<F> {
+    /// No emitter was sampled where it started (a camera ray, a mirror or glass bounce,
+    /// no emitters, [`LightSampling::Bsdf`], or the depth left no room): the light it finds
+    /// counts in full.
+    Unweighted,
+    /// Scattered from a matte surface that also sampled an emitter, with this density per
+    /// unit solid angle (`cos θ/π`): the light it finds is weighted against that sample.
+    Scattered(F),
 }
 
 /// Traces rays through one scene and counts them.
 pub struct Tracer<'a, F, S, M> {
     pub(super) scene: &'a Scene<F, S, M>,
     max_depth: u32,
+    light_sampling: LightSampling,
     pub(super) rays: u64,
 }
 
 impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
-    /// A tracer for `scene` that lets paths bounce at most `max_depth` times.
+    /// A tracer for `scene` that lets paths bounce at most `max_depth` times, sampling
+    /// emitters with [`LightSampling::Mis`].
     pub fn new(scene: &'a Scene<F, S, M>, max_depth: u32) -> Self {
         Self {
             scene,
             max_depth,
+            light_sampling: LightSampling::Mis,
             rays: 0,
+        }
+    }
+
+    /// The same tracer, finding the light of emitting surfaces by `light_sampling`.
+    #[must_use]
+    pub fn light_sampling(self, light_sampling: LightSampling) -> Self {
+        Self {
+            light_sampling,
+            ..self
         }
     }
 
@@ -52,11 +79,22 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
     /// The colour a ray brings back, `depth` being the bounces it has already taken:
     ///
     /// - it hits nothing: the background;
-    /// - it hits a surface after `max_depth` bounces: black `(0, 0, 0)`;
-    /// - otherwise: the direct light `L_d` from point lights (matte surfaces only) plus
-    ///   the scattered ray's colour absorbed by the albedo,
-    ///   `C = L_d + A ∘ trace(scattered, depth + 1)`, or just `L_d` if the material
-    ///   absorbs the ray.
+    /// - it hits a surface after `max_depth` bounces: black `(0, 0, 0)`, emitter or not;
+    /// - otherwise the light the surface gives off `L_e`, the direct light `L_d` (from
+    ///   point lights and one sampled emitter, matte surfaces only) and the scattered ray's
+    ///   colour absorbed by the albedo,
+    ///
+    ///   `C = L_e + L_d + A ∘ trace(scattered, depth + 1)`,
+    ///
+    ///   or `L_e + L_d` if the material absorbs the ray.
+    ///
+    /// With emitters sampled ([`LightSampling::Mis`]), the light from an emitter reaches a
+    /// matte hit two ways, the sample and the scattered ray, and each is weighted by the
+    /// power heuristic so the two add up to it once. The sample at depth `d` stands for the
+    /// scattered ray meeting the emitter at depth `d + 1`, so it is taken only if
+    /// `d + 1 < max_depth`, where that ray's light would count: both ways then render the
+    /// same truncated recursion. Point lights, which no ray can hit, light every surface
+    /// met before `max_depth`.
     ///
     /// This recursion defines every image: [`render_reference`](super::render_reference)
     /// calls it for each sample, and the batched renderer reproduces it bit for bit.
@@ -65,68 +103,115 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         R: Rng + ?Sized,
         M: Material<F, R>,
     {
+        self.trace_from(ray, depth, Arrival::Unweighted, rng)
+    }
+
+    /// [`Tracer::trace`] for a ray that left its last vertex as `arrival` says.
+    fn trace_from<R>(&mut self, ray: &Ray<F>, depth: u32, arrival: Arrival<F>, rng: &mut R) -> Color<F>
+    where
+        R: Rng + ?Sized,
+        M: Material<F, R>,
+    {
         self.rays += 1;
-        let hit = self.scene.hit(ray, F::infinity());
-        match self.shade(ray, hit, depth, rng) {
+        let hit = self.scene.hit_object(ray, F::infinity());
+        match self.shade(ray, hit, depth, arrival, rng) {
             Step::Done(colour) => colour,
-            Step::Go(next, direct, attenuation) => {
-                saturate(direct + attenuation * self.trace(&next, depth + 1, rng))
+            Step::Go(next, direct, attenuation, arrival) => {
+                saturate(direct + attenuation * self.trace_from(&next, depth + 1, arrival, rng))
             }
         }
     }
 
     /// What a ray's hit (or miss) does: a final colour, or the ray to trace next with the
-    /// direct light and attenuation to combine with what it brings back.
+    /// light this bounce adds (`L_e + L_d`) and the attenuation to combine with what it
+    /// brings back. Random numbers are drawn in one order: the emitter sample's four, then
+    /// the material's.
     #[inline(always)]
     pub(super) fn shade<R>(
         &mut self,
         ray: &Ray<F>,
-        hit: Option<(Hit<F>, &M)>,
+        hit: Option<(Hit<F>, &Object<S, M>)>,
         depth: u32,
+        arrival: Arrival<F>,
         rng: &mut R,
     ) -> Step<F>
     where
         R: Rng + ?Sized,
         M: Material<F, R>,
     {
-        let Some((hit, material)) = hit else {
+        let Some((hit, object)) = hit else {
             return Step::Done(self.scene.background().color(ray.direction));
         };
         if depth >= self.max_depth {
             return Step::Done(Color::zero());
         }
-        let direct = match material.diffuse_albedo() {
+        let material = &object.material;
+        let diffuse = material.diffuse_albedo();
+        let mut direct = match diffuse {
             Some(albedo) if !self.scene.lights().is_empty() => self.direct_light(&hit, albedo),
             _ => Color::zero(),
         };
+        let emitters = self.scene.emitters::<R>();
+        if let Some(emission) = material.emission() {
+            direct = direct + self.emitted(ray, &hit, object, emission, arrival, emitters);
+        }
+        // An emitter sample here stands for a scattered ray meeting it at depth + 1.
+        let sampled = match diffuse {
+            Some(albedo) if self.samples_emitters(emitters, depth) => {
+                direct = direct + self.sample_emitter(&hit, albedo, emitters, rng);
+                true
+            }
+            _ => false,
+        };
         match material.scatter(ray, &hit, rng) {
-            Some(s) => Step::Go(hit.spawn(s.direction), direct, s.attenuation),
+            Some(s) => {
+                let next = if sampled {
+                    Arrival::Scattered(cosine_pdf(hit.normal, s.direction))
+                } else {
+                    Arrival::Unweighted
+                };
+                Step::Go(hit.spawn(s.direction), direct, s.attenuation, next)
+            }
             None => Step::Done(saturate(direct)),
         }
     }
 
-    /// Light arriving straight from the point lights at a matte hit with albedo `A`:
-    /// `Σ A/π · I · max(0, N·L) / d²` over the lights a shadow ray reaches unblocked.
-    fn direct_light(&mut self, hit: &Hit<F>, albedo: Color<F>) -> Color<F> {
-        let brdf = albedo * (F::one() / lit::<F>(std::f64::consts::PI));
-        let mut sum = Color::zero();
-        // Shadow rays leave on the normal's side: one offset origin serves every light.
-        let origin = offset_ray_origin(hit.point, hit.error, hit.normal, hit.normal);
-        for light in self.scene.lights() {
-            let to_light = light.position() - origin;
-            let dist2 = to_light.length_squared();
-            let Some(dir) = to_light.try_normalize() else {
-                continue;
-            };
-            let cos = hit.normal.dot(dir);
-            if cos <= F::zero() {
-                continue;
-            }
-            self.rays += 1;
-            if !self.scene.occluded(&Ray::new(origin, dir), dist2.sqrt()) {
-                sum = sum + brdf * light.intensity() * (cos / dist2);
-            }
-        }
-        sum
+    /// Whether a matte hit at `depth` samples an emitter: light sampling is on, there is
+    /// an emitter, and a ray scattered from here would still count the light it finds.
+    #[inline]
+    fn samples_emitters(&self, emitters: &Emitters, depth: u32) -> bool {
+        self.light_sampling == LightSampling::Mis && !emitters.is_empty() && depth + 1 < self.max_depth
     }
+
+    /// The light an emitter gives off toward the ray that hit it: `L_e` on an emitting
+    /// face, weighted, if the ray was scattered from a vertex that also sampled emitters, by
+    /// `w = p_s²/(p_s² + p_e²)`: `p_s` the density the ray was scattered with and `p_e`
+    /// the density with which sampling the emitters from its origin draws this direction
+    /// (the emitter's probability times its shape's density).
+    fn emitted(
+        &self,
+        ray: &Ray<F>,
+        hit: &Hit<F>,
+        object: &Object<S, M>,
+        emission: Emission<F>,
+        arrival: Arrival<F>,
+        emitters: &Emitters,
+    ) -> Color<F> {
+        let radiance = emission.toward(hit.front_face);
+        match arrival {
+            Arrival::Scattered(scatter_pdf) if radiance != Color::zero() => {
+                let chosen = F::from_f64(emitters.probability_of(object.shape.area(), emission));
+                let light_pdf = chosen * object.shape.pdf(ray, hit);
+                radiance * power_heuristic(scatter_pdf, light_pdf)
+            }
+            _ => radiance,
+        }
+    }
+}
+
+/// The density of a cosine-distributed direction `d` about the unit normal `n`,
+/// `max(0, n·d)/π`: what a matte surface scatters with.
+#[inline]
+pub(super) fn cosine_pdf<F: Float>(n: Vec3<F>, d: Vec3<F>) -> F {
+    n.dot(d).max(F::zero()) * F::from_f64(FRAC_1_PI)
 }

@@ -129,7 +129,7 @@ impl<F: Float> Index<F> {
         objects: &'a [Object<S, M>],
         rays: &[Ray<F>],
         near: &mut Nearests<F>,
-        mut each: impl FnMut(usize, Option<(Hit<F>, &'a M)>),
+        mut each: impl FnMut(usize, Option<(Hit<F>, &'a Object<S, M>)>),
     ) {
         let Nearests { t, found, streams } = near;
         t.clear();
@@ -149,7 +149,7 @@ impl<F: Float> Index<F> {
         }
         for (i, ray) in rays.iter().enumerate() {
             let hit = (t[i] < F::infinity()).then(|| Self::record(objects, ray, t[i], &found[i]));
-            each(i, hit.map(|(hit, object)| (hit, &object.material)));
+            each(i, hit);
         }
     }
 

@@ -12,7 +12,7 @@ use crate::camera::{LookAtCamera, ScreenCamera};
 use crate::error::Result;
 use crate::float::{Float, lit};
 use crate::light::PointLight;
-use crate::material::{Dielectric, Lambertian, MaterialKind, Mirror, Reflectance};
+use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, Reflectance};
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
 use crate::shape::{Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
@@ -45,6 +45,10 @@ pub struct Summary {
     pub meshes: usize,
     /// Point lights.
     pub lights: usize,
+    /// Objects that give off light (of an emissive material).
+    pub emitters: usize,
+    /// Of those, the ones sampled as lights (spheres, triangles and meshes; not planes).
+    pub sampled_emitters: usize,
     /// Mesh faces left out for having no area: those the mesh reader skipped and those
     /// the placement (or the rounding to the render's scalar) made degenerate.
     pub skipped_degenerate: usize,
@@ -200,7 +204,13 @@ fn background<F: Float>(at: &Field, spec: &BackgroundSpec) -> Result<Background<
 
 fn material<F: Float>(at: &Field, spec: &MaterialSpec) -> Result<MaterialKind<F>> {
     let albedo_at = at.key("albedo");
-    let wrap = |e| blame::<F>(at, e, &[("refractive index", "index")]);
+    let wrap = |e| {
+        blame::<F>(
+            at,
+            e,
+            &[("refractive index", "index"), ("emitted radiance", "radiance")],
+        )
+    };
     Ok(match *spec {
         MaterialSpec::Mirror { albedo } => Mirror::new(vec(check::albedo(&albedo_at, albedo)?))
             .map_err(wrap)?
@@ -225,6 +235,20 @@ fn material<F: Float>(at: &Field, spec: &MaterialSpec) -> Result<MaterialKind<F>
                     FresnelSpec::Exact => Reflectance::Fresnel,
                 })
                 .into()
+        }
+        MaterialSpec::Emissive {
+            radiance,
+            two_sided,
+            albedo,
+        } => {
+            let radiance = check::non_negative(&at.key("radiance"), radiance)?;
+            let mut light = Emissive::new(vec(radiance)).map_err(wrap)?.two_sided(two_sided);
+            if let Some(albedo) = albedo {
+                light = light
+                    .with_albedo(vec(check::albedo(&albedo_at, albedo)?))
+                    .map_err(wrap)?;
+            }
+            light.into()
         }
     })
 }
@@ -329,6 +353,9 @@ fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
         }
     }
     summary.lights = scene.lights().len();
+    let emits = |m: &MaterialKind<F>| matches!(m, MaterialKind::Emissive(_));
+    summary.emitters = scene.objects().iter().filter(|o| emits(&o.material)).count();
+    summary.sampled_emitters = scene.emitters::<crate::sampling::DefaultRng>().len();
     summary.bounds = bounds;
     summary.uses_bvh = scene.uses_bvh();
 }

@@ -168,6 +168,17 @@ pub enum MaterialSpec {
         #[serde(default)]
         fresnel: FresnelSpec,
     },
+    /// A surface that gives off light (an area light), and may also reflect as a matte one.
+    Emissive {
+        /// The emitted radiance per channel, finite and `≥ 0`.
+        radiance: Triple,
+        /// Whether the back face emits too (default: the front face only).
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        two_sided: bool,
+        /// The matte albedo, each channel in `[0, 1]` (default black: it reflects nothing).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        albedo: Option<Triple>,
+    },
 }
 
 /// How a dielectric computes its reflectance.

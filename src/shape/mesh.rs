@@ -1,12 +1,14 @@
 //! An indexed triangle mesh: vertices stored once, triangles as indices into them.
 
+use super::sample::{sample_triangle, triangle_area};
 use super::triangle::{checked_normal, intersect_vertices, record, unit_normal, vertex_bounds};
-use super::{Hit, Hittable, Intersection};
+use super::{Hit, Hittable, Intersection, SurfaceSample, hit_solid_angle};
 use crate::aabb::Aabb;
 use crate::error::{Error, Result};
-use crate::float::Float;
+use crate::float::{Float, lit};
 use crate::ray::Ray;
 use crate::vec3::Vec3;
+use std::sync::OnceLock;
 
 /// A triangle mesh: shared vertex positions and triangles indexing them, all of one
 /// material in a scene.
@@ -15,11 +17,29 @@ use crate::vec3::Vec3;
 /// on its own and is intersected exactly as a [`Triangle`](super::Triangle) with the same
 /// vertices (watertight across shared edges, the same error-bounded hit points), while
 /// each vertex is stored once instead of in every triangle around it.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Mesh<F> {
     vertices: Vec<Vec3<F>>,
     triangles: Vec<[u32; 3]>,
     skipped: usize,
+    /// Built the first time the mesh is sampled as a light, never for other meshes.
+    areas: OnceLock<Areas<F>>,
+}
+
+/// A mesh's triangle areas, for drawing a triangle in proportion to its area.
+#[derive(Clone, Debug)]
+struct Areas<F> {
+    /// `cumulative[k]`: the areas of triangles `0..=k` summed, in `f64`.
+    cumulative: Vec<f64>,
+    /// The whole area.
+    total: F,
+}
+
+/// Two meshes are equal when their geometry is (whether they were sampled yet is not part of it).
+impl<F: PartialEq> PartialEq for Mesh<F> {
+    fn eq(&self, other: &Self) -> bool {
+        (&self.vertices, &self.triangles, self.skipped) == (&other.vertices, &other.triangles, other.skipped)
+    }
 }
 
 impl<F: Float> Mesh<F> {
@@ -73,6 +93,7 @@ impl<F: Float> Mesh<F> {
             skipped: before - triangles.len(),
             vertices,
             triangles,
+            areas: OnceLock::new(),
         })
     }
 
@@ -93,6 +114,23 @@ impl<F: Float> Mesh<F> {
     #[inline]
     pub fn triangle(&self, k: u32) -> [Vec3<F>; 3] {
         self.triangles[k as usize].map(|i| self.vertices[i as usize])
+    }
+
+    /// The triangle areas, summed up once.
+    fn areas(&self) -> &Areas<F> {
+        self.areas.get_or_init(|| {
+            let mut sum = 0.0;
+            let cumulative: Vec<f64> = (0..self.parts())
+                .map(|k| {
+                    sum += triangle_area(&self.triangle(k)).to_f64();
+                    sum
+                })
+                .collect();
+            Areas {
+                cumulative,
+                total: lit(sum),
+            }
+        })
     }
 
     /// The triangles [`Mesh::new`] left out for having no area in `F`.
@@ -156,6 +194,36 @@ impl<F: Float> Hittable<F> for Mesh<F> {
     fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
         let (t, coords) = intersect_vertices(&self.triangle(part), ray, t_max)?;
         Some(Intersection { t, part, coords })
+    }
+
+    /// The sum of the triangles' areas.
+    fn area(&self) -> Option<F> {
+        Some(self.areas().total)
+    }
+
+    /// A point uniform over the whole surface: a triangle drawn in proportion to its area
+    /// by `u₀` (a binary search of the running sums of the areas), then a point uniform on
+    /// it by `u₁, u₂`. The density is `1/area` of the mesh everywhere (`A_k/A · 1/A_k`),
+    /// converted to solid angle.
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        let areas = self.areas();
+        let target = u[0] * areas.cumulative.last()?;
+        let k = areas.cumulative.partition_point(|&c| c <= target);
+        let k = k.min(areas.cumulative.len() - 1) as u32;
+        let v = self.triangle(k);
+        let pdf_area = F::one() / areas.total;
+        Some(sample_triangle(
+            &v,
+            checked_normal(v),
+            k,
+            pdf_area,
+            from,
+            [u[1], u[2]],
+        ))
+    }
+
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        hit_solid_angle(F::one() / self.areas().total, ray, hit)
     }
 }
 

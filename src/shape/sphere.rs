@@ -1,12 +1,14 @@
 //! The sphere `|X − C|² = r²`.
 
-use super::{Hit, Hittable, Intersection};
+use super::{Hit, Hittable, Intersection, SurfaceSample, area_to_solid_angle, hit_solid_angle};
 use crate::aabb::Aabb;
 use crate::error::Result;
-use crate::float::{Float, to};
+use crate::float::{Float, lit, to};
 use crate::ray::Ray;
+use crate::sampling::{orthonormal_basis, uniform_sphere};
 use crate::validate;
 use crate::vec3::Vec3;
+use std::f64::consts::{PI, TAU};
 
 /// A sphere with centre `C` and radius `r > 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -86,6 +88,58 @@ impl<F: Float> Sphere<F> {
         // instead of one after the other on the path's critical chain.
         Hit::new(t, point, error, l * (F::one() / len), ray.direction)
     }
+
+    /// The surface area `4πr²`.
+    #[inline]
+    fn surface(&self) -> F {
+        lit::<F>(4.0 * PI) * self.radius * self.radius
+    }
+
+    /// Whether `p` lies inside the sphere or on it, where it sees no cone but the whole
+    /// sphere around it.
+    #[inline]
+    fn encloses(&self, p: Vec3<F>) -> bool {
+        (p - self.center).length_squared() <= self.radius * self.radius
+    }
+
+    /// `1 − cos θ_max` of the cone of directions from a point at squared distance `d2`
+    /// from the centre that meet the sphere, `sin²θ_max = r²/d²`: computed as
+    /// `sin²θ_max/(1 + cos θ_max)`, which equals it without the cancellation of
+    /// `1 − cos θ_max` for a small or far sphere (where pbrt-v4 switches to a Taylor
+    /// expansion below `sin²θ_max = sin²1.5°`).
+    #[inline]
+    fn cone(&self, d2: F) -> (F, F) {
+        let sin2_max = self.radius * self.radius / d2;
+        let cos_max = (F::one() - sin2_max).max(F::zero()).sqrt();
+        (sin2_max, sin2_max / (F::one() + cos_max))
+    }
+
+    /// A direction of the cone from `from`, uniform in solid angle (pbrt-v4's
+    /// `Sphere::Sample`), as the visible point it reaches: with `x = 1 − cos θ = u₀(1 − cos θ_max)`,
+    /// `sin²θ = x(2 − x)`, `φ = 2πu₁`, the point is at the angle `α` from the centre's
+    /// direction to `from`, `cos α = sin²θ/sin θ_max + cos θ·√(1 − sin²θ/sin²θ_max)`
+    /// (the nearer intersection of that direction with the sphere). Density
+    /// `1/(2π(1 − cos θ_max))`.
+    fn sample_cone(&self, from: Vec3<F>, u: [f64; 2]) -> SurfaceSample<F> {
+        let axis = self.center - from;
+        let d2 = axis.length_squared();
+        let (sin2_max, one_minus_cos_max) = self.cone(d2);
+        let x = lit::<F>(u[0]) * one_minus_cos_max;
+        let (cos_t, sin2_t) = (F::one() - x, x * (lit::<F>(2.0) - x));
+        let sin_max = sin2_max.sqrt();
+        let cos_a = sin2_t / sin_max + cos_t * (F::one() - sin2_t / sin2_max).max(F::zero()).sqrt();
+        let sin_a = (F::one() - cos_a * cos_a).max(F::zero()).sqrt();
+        let (sin_p, cos_p) = (TAU * u[1]).sin_cos();
+        let w = axis / d2.sqrt();
+        let (t, b) = orthonormal_basis(w);
+        let normal = -(t * (sin_a * lit(cos_p)) + b * (sin_a * lit(sin_p)) + w * cos_a);
+        SurfaceSample {
+            point: self.center + normal * self.radius,
+            normal,
+            part: 0,
+            pdf: F::one() / (lit::<F>(TAU) * one_minus_cos_max),
+        }
+    }
 }
 
 impl<F: Float> Hittable<F> for Sphere<F> {
@@ -118,6 +172,41 @@ impl<F: Float> Hittable<F> for Sphere<F> {
     fn bounds(&self) -> Option<Aabb<F>> {
         let pad = (self.center.abs() + Vec3::splat(self.radius)) * F::gamma(1) + Vec3::splat(self.radius);
         Some(Aabb::new(self.center - pad, self.center + pad))
+    }
+
+    /// `4πr²`.
+    #[inline]
+    fn area(&self) -> Option<F> {
+        Some(self.surface())
+    }
+
+    /// From outside, a direction uniform in the cone of directions that meet the sphere,
+    /// `1 − cos θ = u₀(1 − cos θ_max)`, `φ = 2πu₁`, as the visible point it reaches
+    /// (pbrt-v4's cone sampling; density `1/(2π(1 − cos θ_max))`); from inside, a point
+    /// uniform on the whole sphere, its density `1/4πr²` per area converted to solid angle.
+    /// `u₂` is not used.
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        if !self.encloses(from) {
+            return Some(self.sample_cone(from, [u[0], u[1]]));
+        }
+        let [x, y, z] = uniform_sphere([u[0], u[1]]);
+        let normal = Vec3::from_f64(x, y, z);
+        let point = self.center + normal * self.radius;
+        let pdf = area_to_solid_angle(F::one() / self.surface(), from, point, normal);
+        Some(SurfaceSample {
+            point,
+            normal,
+            part: 0,
+            pdf,
+        })
+    }
+
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        if self.encloses(ray.origin) {
+            return hit_solid_angle(F::one() / self.surface(), ray, hit);
+        }
+        let d2 = (self.center - ray.origin).length_squared();
+        F::one() / (lit::<F>(TAU) * self.cone(d2).1)
     }
 }
 

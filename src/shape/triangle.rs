@@ -1,7 +1,8 @@
 //! The triangle `ABC`, intersected watertight (Woop, Benthin and Wald 2013, as in
 //! pbrt-v4's `IntersectTriangle`).
 
-use super::{Hit, Hittable, Intersection};
+use super::sample::{sample_triangle, triangle_area};
+use super::{Hit, Hittable, Intersection, SurfaceSample, hit_solid_angle};
 use crate::aabb::Aabb;
 use crate::error::{Error, Result};
 use crate::float::Float;
@@ -288,6 +289,30 @@ impl<F: Float> Hittable<F> for Triangle<F> {
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
         Some(vertex_bounds(self.vertices()))
+    }
+
+    /// `|(B − A)×(C − A)|/2`.
+    #[inline]
+    fn area(&self) -> Option<F> {
+        Some(triangle_area(&self.vertices()))
+    }
+
+    /// A point uniform on the triangle (density `1/area`, converted to solid angle) from
+    /// `u₀, u₁`; `u₂` is not used.
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        let pdf_area = F::one() / triangle_area(&self.vertices());
+        Some(sample_triangle(
+            &self.vertices(),
+            self.normal(),
+            0,
+            pdf_area,
+            from,
+            [u[0], u[1]],
+        ))
+    }
+
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        hit_solid_angle(F::one() / triangle_area(&self.vertices()), ray, hit)
     }
 }
 

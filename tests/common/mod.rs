@@ -8,6 +8,8 @@
 // Each test binary includes this module and uses only part of it.
 #![allow(dead_code)]
 
+pub mod draws;
+
 use proptest::prelude::*;
 use proptest::test_runner::{FileFailurePersistence, RngSeed, TestRunner};
 use rand::TryRng;
@@ -228,6 +230,21 @@ pub fn chi2_equiprobable(observed: &[u64]) -> f64 {
         .map(|&o| {
             let d = o as f64 - expected;
             d * d / expected
+        })
+        .sum()
+}
+
+/// Pearson's statistic `X² = Σ (Oᵢ − Eᵢ)²/Eᵢ` for counts `observed` against the expected
+/// shares `probabilities` (summing to 1) of their total.
+pub fn chi2_against(observed: &[u64], probabilities: &[f64]) -> f64 {
+    let total: u64 = observed.iter().sum();
+    observed
+        .iter()
+        .zip(probabilities)
+        .map(|(&o, &p)| {
+            let e = total as f64 * p;
+            let d = o as f64 - e;
+            d * d / e
         })
         .sum()
 }

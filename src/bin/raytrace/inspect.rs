@@ -16,6 +16,14 @@ pub fn check(path: &Path) -> Result<()> {
         "  objects: {} spheres, {} planes, {} triangles (meshes: {}), {} lights",
         s.spheres, s.planes, s.triangles, s.meshes, s.lights
     );
+    if s.emitters > 0 {
+        println!(
+            "  emitters: {} objects give off light, {} of them sampled as lights",
+            s.emitters, s.sampled_emitters
+        );
+    } else {
+        println!("  emitters: none");
+    }
     if s.skipped_degenerate > 0 {
         println!("  skipped: {} faces without area", s.skipped_degenerate);
     }

@@ -1,0 +1,217 @@
+//! A surface that gives off light: an area light.
+
+use super::{Material, Scatter};
+use crate::error::Result;
+use crate::float::Float;
+use crate::ray::Ray;
+use crate::sampling::lambertian_direction;
+use crate::shape::Hit;
+use crate::validate;
+use crate::vec3::Color;
+use rand::Rng;
+
+/// The light a surface gives off: radiance `L_e` per channel, the same in every direction
+/// (a diffuse emitter), from the front face only (where the shape's outward normal points)
+/// or from both faces.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Emission<F> {
+    radiance: Color<F>,
+    two_sided: bool,
+}
+
+impl<F: Float> Emission<F> {
+    /// Radiance `L_e` from the front face; each channel must be finite and `≥ 0`.
+    pub fn new(radiance: Color<F>) -> Result<Self> {
+        Ok(Self {
+            radiance: validate::non_negative("emitted radiance", radiance)?,
+            two_sided: false,
+        })
+    }
+
+    /// The same emission from both faces (`true`) or the front face only (`false`).
+    #[must_use]
+    pub fn two_sided(self, two_sided: bool) -> Self {
+        Self { two_sided, ..self }
+    }
+
+    /// The radiance `L_e`.
+    pub fn radiance(&self) -> Color<F> {
+        self.radiance
+    }
+
+    /// Whether both faces emit.
+    pub fn is_two_sided(&self) -> bool {
+        self.two_sided
+    }
+
+    /// The radiance leaving the face a ray sees: `L_e` on the front face, and on the back
+    /// face if the emission is two-sided; black otherwise.
+    #[inline]
+    pub fn toward(&self, front_face: bool) -> Color<F> {
+        if front_face || self.two_sided {
+            self.radiance
+        } else {
+            Color::zero()
+        }
+    }
+
+    /// The power given off per unit area, as one number for choosing among emitters:
+    /// `π·L̄·s`, `L̄` the mean of the channels and `s` the emitting faces (1 or 2). A diffuse
+    /// emitter of area `A` gives off `Φ = ∫_A ∫ L_e cos θ dω dA = π·L_e·A` per face.
+    pub fn power_per_area(&self) -> f64 {
+        let [r, g, b] = self.radiance.to_f64();
+        let faces = if self.two_sided { 2.0 } else { 1.0 };
+        std::f64::consts::PI * (r + g + b) / 3.0 * faces
+    }
+
+    /// This emission in scalar `G`, rounded through `f64` and re-validated, as
+    /// [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> Result<Emission<G>> {
+        Ok(Emission::new(self.radiance.cast())?.two_sided(self.two_sided))
+    }
+}
+
+/// A light-giving surface: it gives off its [`Emission`] `L_e` and reflects as a matte
+/// surface of albedo `A` (black by default, when it absorbs every ray), so the colour a
+/// ray brings back from it is `C = L_e + A ∘ C⁺`, `C⁺` the scattered ray's colour.
+///
+/// On a sphere, a triangle or a mesh the renderer also samples it directly from matte
+/// surfaces (next-event estimation); on a plane, whose area is infinite, only rays that
+/// hit it find its light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Emissive<F> {
+    emission: Emission<F>,
+    albedo: Color<F>,
+}
+
+impl<F: Float> Emissive<F> {
+    /// A black surface giving off radiance `L_e` from its front face; each channel must
+    /// be finite and `≥ 0`.
+    pub fn new(radiance: Color<F>) -> Result<Self> {
+        Ok(Self::from(Emission::new(radiance)?))
+    }
+
+    /// The same surface emitting from both faces (`true`) or the front face (`false`).
+    #[must_use]
+    pub fn two_sided(self, two_sided: bool) -> Self {
+        Self {
+            emission: self.emission.two_sided(two_sided),
+            ..self
+        }
+    }
+
+    /// The same surface reflecting as a matte one of `albedo`; each channel must lie in
+    /// `[0, 1]`.
+    pub fn with_albedo(self, albedo: Color<F>) -> Result<Self> {
+        Ok(Self {
+            albedo: validate::albedo("emissive albedo", albedo)?,
+            ..self
+        })
+    }
+
+    /// What it gives off.
+    pub fn emission(&self) -> Emission<F> {
+        self.emission
+    }
+
+    /// The matte albedo `A` (black: it reflects nothing).
+    pub fn albedo(&self) -> Color<F> {
+        self.albedo
+    }
+
+    /// Whether it reflects at all.
+    #[inline]
+    fn reflects(&self) -> bool {
+        self.albedo != Color::zero()
+    }
+
+    /// This material in scalar `G`, rounded through `f64` and re-validated.
+    pub fn cast<G: Float>(&self) -> Result<Emissive<G>> {
+        Emissive::from(self.emission.cast()?).with_albedo(self.albedo.cast())
+    }
+}
+
+impl<F: Float> From<Emission<F>> for Emissive<F> {
+    fn from(emission: Emission<F>) -> Self {
+        Self {
+            emission,
+            albedo: Color::zero(),
+        }
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> Material<F, R> for Emissive<F> {
+    /// Absorbs the ray when black; otherwise scatters it as a [`Lambertian`](super::Lambertian)
+    /// surface with the specification's tangent-sphere sampler.
+    #[inline]
+    fn scatter(&self, _ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
+        self.reflects().then(|| Scatter {
+            attenuation: self.albedo,
+            direction: lambertian_direction(hit.normal, rng),
+        })
+    }
+
+    #[inline]
+    fn diffuse_albedo(&self) -> Option<Color<F>> {
+        self.reflects().then_some(self.albedo)
+    }
+
+    #[inline]
+    fn emission(&self) -> Option<Emission<F>> {
+        Some(self.emission)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampling::DefaultRng;
+    use crate::vec3::Vec3;
+    use rand::SeedableRng;
+
+    #[test]
+    fn front_back_and_two_sided() {
+        let e = Emission::new(Vec3::new(1.0, 2.0, 3.0)).unwrap();
+        assert_eq!(e.toward(true), Vec3::new(1.0, 2.0, 3.0));
+        assert_eq!(e.toward(false), Vec3::zero());
+        assert_eq!(e.two_sided(true).toward(false), Vec3::new(1.0, 2.0, 3.0));
+        assert_eq!(e.power_per_area(), 2.0 * std::f64::consts::PI);
+        assert_eq!(e.two_sided(true).power_per_area(), 4.0 * std::f64::consts::PI);
+    }
+
+    #[test]
+    fn black_emitters_absorb_and_grey_ones_reflect() {
+        let hit = Hit::new(
+            1.0,
+            Vec3::zero(),
+            Vec3::zero(),
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(0.0, -1.0, 0.0),
+        );
+        let ray = Ray::new(Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, -1.0, 0.0));
+        let mut rng = DefaultRng::seed_from_u64(1);
+        let black = Emissive::new(Vec3::splat(4.0)).unwrap();
+        assert!(Material::<f64, _>::scatter(&black, &ray, &hit, &mut rng).is_none());
+        assert_eq!(Material::<f64, DefaultRng>::diffuse_albedo(&black), None);
+        let grey = black.with_albedo(Vec3::splat(0.5)).unwrap();
+        let s = Material::<f64, _>::scatter(&grey, &ray, &hit, &mut rng).unwrap();
+        assert!(s.direction.dot(hit.normal) >= 0.0);
+        assert_eq!(
+            Material::<f64, DefaultRng>::diffuse_albedo(&grey),
+            Some(Vec3::splat(0.5))
+        );
+    }
+
+    #[test]
+    fn rejects_invalid_values() {
+        let msg = Emissive::new(Vec3::new(1.0, -1.0, 0.0)).unwrap_err().to_string();
+        assert!(msg.contains("emitted radiance"), "{msg}");
+        assert!(Emissive::new(Vec3::new(f64::INFINITY, 0.0, 0.0)).is_err());
+        assert!(
+            Emissive::new(Vec3::splat(1.0))
+                .unwrap()
+                .with_albedo(Vec3::splat(1.5))
+                .is_err()
+        );
+    }
+}
