@@ -1,8 +1,13 @@
-//! The fast renderer gives the reference renderer's bytes: every example scene, in f32 and
-//! f64, through both dispatch paths, at 1, 2 and 3 samples per pixel, on 1 and 2 threads,
-//! whole and in tiles. The reference renderer calls the spec's recursive `trace` once per
+//! The fast renderer gives the reference renderer's bytes: every example scene (the
+//! `custom_shape` example's user shape and material among them) and a scene of meshes on
+//! the BVH, in f32 and f64, through both dispatch paths, at 1, 2 and 3 samples per pixel,
+//! on 1 and 2 threads, whole and in tiles. The reference renderer calls the spec's recursive `trace` once per
 //! sample, so this is the test that the batched, parallel renderer renders the spec.
 
+#[path = "mesh_scene/mod.rs"]
+mod mesh_scene;
+#[path = "../examples/custom_shape/parts.rs"]
+mod parts;
 #[path = "../examples/scenes/mod.rs"]
 mod scenes;
 
@@ -28,6 +33,10 @@ fn examples<F: Float>() -> Vec<(&'static str, Built<F>)> {
                 scenes::random_spheres(0).unwrap(),
                 Box::new(scenes::random_spheres_camera(32).unwrap()),
             ),
+        ),
+        (
+            "meshes",
+            (mesh_scene::meshes(), Box::new(ScreenCamera::new(36, 18).unwrap())),
         ),
     ]
 }
@@ -78,6 +87,29 @@ fn every_example<F: Float>() {
             check(name, &scene.to_dyn::<DefaultRng>(), &*camera, spp);
         }
     }
+    // The user's own shape and material, through the user's enums and through trait objects.
+    let camera = ScreenCamera::new(36, 18).unwrap();
+    for spp in [1, 2, 3] {
+        check("custom_shape", &parts::enum_scene::<F>().unwrap(), &camera, spp);
+        check("custom_shape", &parts::dyn_scene::<F>().unwrap(), &camera, spp);
+    }
+}
+
+/// The mesh scene is what it is meant to test: triangles of indexed meshes in a BVH.
+#[test]
+fn the_mesh_scene_puts_mesh_triangles_on_the_bvh() {
+    let scene = mesh_scene::meshes::<f32>();
+    let triangles: u32 = scene
+        .objects()
+        .iter()
+        .filter_map(|o| match &o.shape {
+            ShapeKind::Mesh(m) => Some(m.parts()),
+            _ => None,
+        })
+        .sum();
+    assert_eq!(triangles, 3 * 20 + 3 * 4);
+    assert!(scene.uses_bvh());
+    assert!(scene.to_dyn::<DefaultRng>().uses_bvh());
 }
 
 #[test]
