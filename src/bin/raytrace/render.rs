@@ -20,6 +20,7 @@ pub fn run(args: &RenderArgs) -> Result<(), Failure> {
     render(args, &file).map_err(|e| blame_option(e, args))
 }
 
+/// The precision resolved, the output checked, the render and its file.
 fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
     let precision = match file.render().precision {
         FilePrecision::F32 => Precision::F32,
