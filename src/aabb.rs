@@ -73,7 +73,7 @@ impl<F: Float> Aabb<F> {
     }
 
     /// Whether the ray meets the box for some `t` in `[0, t_max]`, by the slab test
-    /// ([`slab_test`], the one the BVH runs, with the other three lanes empty).
+    /// (`slab_test`, the one the BVH runs, with the other three lanes empty).
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> bool {
         let r = SlabRay::new(ray);

@@ -21,8 +21,8 @@ use wide::{Child, Wide};
 const MAX_LEAF: usize = crate::lanes::LANES;
 /// Cost of visiting a node, relative to testing one leaf. A leaf of up to four spheres
 /// is one packet test, so the SAH costs a leaf `⌈N/4⌉` and a subtree of `N` primitives
-/// `N/4` (MacDonald & Booth's linear estimate, in packets). On the random-spheres scene ½
-/// was fastest, ¼ and 1 within 3 % (`docs/PERFORMANCE.md`).
+/// `N/4` (MacDonald & Booth's linear estimate, in packets). ½ rendered fastest of the
+/// costs tried (figures in `docs/PERFORMANCE.md`).
 const TRAVERSAL_COST: f64 = 0.5;
 
 /// One node of the flattened binary tree the build makes (32 bytes in f32). An interior

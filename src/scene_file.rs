@@ -34,7 +34,6 @@
 mod build;
 mod camera;
 mod check;
-mod entries;
 mod integer;
 mod location;
 mod model;
@@ -68,29 +67,17 @@ pub struct SceneFile {
     /// `[background]`.
     pub background: BackgroundSpec,
     /// `[materials.NAME]`: the materials objects refer to by name.
-    #[serde(deserialize_with = "materials", skip_serializing_if = "BTreeMap::is_empty")]
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
     pub materials: BTreeMap<String, MaterialSpec>,
     /// `[[objects]]`, in the order they are added to the scene.
-    #[serde(deserialize_with = "objects", skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub objects: Vec<ObjectSpec>,
     /// `[[lights]]`: point lights.
-    #[serde(deserialize_with = "lights", skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub lights: Vec<LightSpec>,
     /// Where the file is: for messages and for mesh paths relative to its folder.
     #[serde(skip)]
     path: PathBuf,
-}
-
-fn materials<'de, D: serde::Deserializer<'de>>(d: D) -> Result<BTreeMap<String, MaterialSpec>, D::Error> {
-    entries::table(d, "materials")
-}
-
-fn objects<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<ObjectSpec>, D::Error> {
-    entries::array(d, "objects")
-}
-
-fn lights<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<LightSpec>, D::Error> {
-    entries::array(d, "lights")
 }
 
 impl SceneFile {
@@ -119,7 +106,7 @@ impl SceneFile {
     /// [`Error::SceneFile`] at `line L, column C` for malformed TOML, an unknown key, a
     /// missing key or a value of the wrong type.
     pub fn parse(text: &str, path: &Path) -> Result<SceneFile> {
-        let mut file: SceneFile = toml::from_str(text).map_err(|e| location::toml_error(path, text, &e))?;
+        let mut file: SceneFile = location::read(path, text)?;
         file.path = path.to_path_buf();
         Ok(file)
     }

@@ -156,6 +156,66 @@ fn every_format_is_written_and_names_carry_the_settings() {
     fs::remove_dir_all(dir).unwrap();
 }
 
+/// The files `raytrace render SCENE ARGS…` writes without `--out`, in a fresh folder.
+fn default_names(test: &str, runs: &[&[&str]]) -> Vec<String> {
+    let dir = folder(test);
+    let s = scene("matte_spheres.toml");
+    for args in runs {
+        let o = Command::new(BIN)
+            .args(
+                [
+                    &[
+                        "render",
+                        s.to_str().unwrap(),
+                        "--width",
+                        "24",
+                        "--spp",
+                        "2",
+                        "--quiet",
+                    ],
+                    *args,
+                ]
+                .concat(),
+            )
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        expect(&o, 0, &["wrote"]);
+    }
+    let mut names: Vec<String> = fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    fs::remove_dir_all(dir).unwrap();
+    names
+}
+
+#[test]
+fn default_names_carry_the_precision_and_a_linear_encoding() {
+    let names = default_names(
+        "names",
+        &[
+            &["--precision", "f32"],
+            &["--encoding", "linear"],
+            &[],
+            &["--format", "exr", "--encoding", "linear"],
+            &["--tile", "1/2", "--precision", "f32"],
+        ],
+    );
+    assert_eq!(
+        names,
+        [
+            "matte_spheres-w24-2spp-d10-seed0-f32-tile1of2.rtile",
+            "matte_spheres-w24-2spp-d10-seed0-f32.png",
+            "matte_spheres-w24-2spp-d10-seed0-f64-linear.png",
+            "matte_spheres-w24-2spp-d10-seed0-f64.exr",
+            "matte_spheres-w24-2spp-d10-seed0-f64.png",
+        ],
+        "five renders, five files: none overwrote another"
+    );
+}
+
 #[test]
 fn check_and_advise_describe_the_scene() {
     let s = scene("plane_and_triangles.toml");
@@ -204,6 +264,23 @@ fn bad_input_is_a_clear_error_with_the_right_exit_code() {
     expect(&run(&["render", s, "--threads", "0"]), 2, &["--threads"]);
     expect(&run(&["render", s, "--width", "0"]), 2, &["--width"]);
     expect(&run(&["render", s, "--tile", "5/4"]), 2, &["--tile"]);
+    // Values the scene cannot take, given on the command line, name the option.
+    expect(
+        &run(&["render", s, "--max-depth", "1001"]),
+        2,
+        &["--max-depth", "1000"],
+    );
+    expect(&run(&["render", s, "--width", "41"]), 2, &["--width", "even"]);
+    let o = run(&["render", s, "--width", "41"]);
+    assert!(!text(&o).contains("render.width"), "{}", text(&o));
+    // A tile is not an image: its file says so, and nothing is written under another name.
+    let image = dir.join("t.png");
+    expect(
+        &run(&["render", s, "--tile", "1/2", "--out", image.to_str().unwrap()]),
+        2,
+        &["--tile", ".rtile"],
+    );
+    assert!(!image.exists());
     expect(&run(&["render"]), 2, &["SCENE"]);
     // Failures: 1, naming what failed.
     let missing = dir.join("missing.toml");
@@ -232,11 +309,19 @@ fn bad_input_is_a_clear_error_with_the_right_exit_code() {
         1,
         &["a-file"],
     );
-    // An image too large for memory is refused before allocating, not aborted.
+    // An image too large for memory is refused before allocating, not aborted: a usage
+    // error when the command line asked for it, a failure when the file did.
     expect(
         &run(&["render", s, "--width", "1000000", "--quiet"]),
+        2,
+        &["--width", "pixels"],
+    );
+    let huge = dir.join("huge.toml");
+    fs::write(&huge, "[render]\nwidth = 1000000\n").unwrap();
+    expect(
+        &run(&["render", huge.to_str().unwrap(), "--quiet"]),
         1,
-        &["pixels"],
+        &["huge.toml", "render.width", "pixels"],
     );
     // A format the name contradicts is a usage error.
     let png = dir.join("x.png");
@@ -249,6 +334,6 @@ fn bad_input_is_a_clear_error_with_the_right_exit_code() {
         .unwrap()
         .map(|e| e.unwrap().file_name())
         .collect();
-    assert_eq!(left.len(), 3, "only the test's own three files remain: {left:?}");
+    assert_eq!(left.len(), 4, "only the test's own four files remain: {left:?}");
     fs::remove_dir_all(dir).unwrap();
 }

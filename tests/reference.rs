@@ -1,11 +1,16 @@
-//! The fast renderer gives the reference renderer's bytes: every example scene, and two
-//! scenes lit by emitting surfaces (the Cornell box, and spheres, a triangle and a plane
-//! giving off light beside a point light, mirror and glass), in f32 and f64, through both
-//! dispatch paths, at 1, 2 and 3 samples per pixel, on 1 and 2 threads, with emitters
+//! The fast renderer gives the reference renderer's bytes: every example scene (the
+//! `custom_shape` example's user shape and material among them), a scene of meshes on the
+//! BVH, and two scenes lit by emitting surfaces (the Cornell box, and spheres, a triangle and
+//! a plane giving off light beside a point light, mirror and glass), in f32 and f64, through
+//! both dispatch paths, at 1, 2 and 3 samples per pixel, on 1 and 2 threads, with emitters
 //! sampled or not, whole and in tiles. The reference renderer calls the spec's recursive
-//! `trace` once per sample, so this is the test that the batched, parallel renderer
-//! renders the spec.
+//! `trace` once per sample, so this is the test that the batched, parallel renderer renders
+//! the spec.
 
+#[path = "mesh_scene/mod.rs"]
+mod mesh_scene;
+#[path = "../examples/custom_shape/parts.rs"]
+mod parts;
 #[path = "../examples/scenes/mod.rs"]
 mod scenes;
 
@@ -31,6 +36,10 @@ fn examples<F: Float>() -> Vec<(&'static str, Built<F>)> {
                 scenes::random_spheres(0).unwrap(),
                 Box::new(scenes::random_spheres_camera(32).unwrap()),
             ),
+        ),
+        (
+            "meshes",
+            (mesh_scene::meshes(), Box::new(ScreenCamera::new(36, 18).unwrap())),
         ),
     ]
 }
@@ -118,6 +127,29 @@ fn every_example<F: Float>() {
             check(name, &scene.to_dyn::<DefaultRng>(), &*camera, spp);
         }
     }
+    // The user's own shape and material, through the user's enums and through trait objects.
+    let camera = ScreenCamera::new(36, 18).unwrap();
+    for spp in [1, 2, 3] {
+        check("custom_shape", &parts::enum_scene::<F>().unwrap(), &camera, spp);
+        check("custom_shape", &parts::dyn_scene::<F>().unwrap(), &camera, spp);
+    }
+}
+
+/// The mesh scene is what it is meant to test: triangles of indexed meshes in a BVH.
+#[test]
+fn the_mesh_scene_puts_mesh_triangles_on_the_bvh() {
+    let scene = mesh_scene::meshes::<f32>();
+    let triangles: u32 = scene
+        .objects()
+        .iter()
+        .filter_map(|o| match &o.shape {
+            ShapeKind::Mesh(m) => Some(m.parts()),
+            _ => None,
+        })
+        .sum();
+    assert_eq!(triangles, 3 * 20 + 3 * 4);
+    assert!(scene.uses_bvh());
+    assert!(scene.to_dyn::<DefaultRng>().uses_bvh());
 }
 
 #[test]

@@ -5,6 +5,10 @@
 //! file says only that they did not change. A deliberate change updates the table and says
 //! so in the commit.
 
+#[path = "mesh_scene/mod.rs"]
+mod mesh_scene;
+#[path = "../examples/custom_shape/parts.rs"]
+mod parts;
 #[path = "../examples/scenes/mod.rs"]
 mod scenes;
 
@@ -23,12 +27,13 @@ fn hash(image: &Image, rays: u64) -> u64 {
     h
 }
 
-/// Each example scene at 24×12 (random_spheres at 24×13), 3 samples, depth 8, seed 5:
-/// its hash on the enum path and on the trait-object path.
+/// Each example scene and the mesh scene at 24×12 (random_spheres at 24×13), 3 samples,
+/// depth 8, seed 5: its hash on the enum path and on the trait-object path (for
+/// `custom_shape`, the user's enums and its `DynScene`).
 fn hashes<F: Float>() -> Vec<(&'static str, u64, u64)> {
     let spec = ScreenCamera::new(24, 12).unwrap();
     let look = scenes::random_spheres_camera::<F>(24).unwrap();
-    let scenes: [(&str, EnumScene<F>, &(dyn Camera<F> + Sync)); 6] = [
+    let scenes: [(&str, EnumScene<F>, &(dyn Camera<F> + Sync)); 7] = [
         ("four_mirrors", scenes::four_mirrors().unwrap(), &spec),
         ("matte_spheres", scenes::matte_spheres().unwrap(), &spec),
         ("glass", scenes::glass().unwrap(), &spec),
@@ -39,21 +44,35 @@ fn hashes<F: Float>() -> Vec<(&'static str, u64, u64)> {
         ),
         ("point_lights", scenes::point_lights().unwrap(), &spec),
         ("random_spheres", scenes::random_spheres(0).unwrap(), &look),
+        ("meshes", mesh_scene::meshes(), &spec),
     ];
-    scenes
+    let run = |r: Render| hash(&r.image, r.stats.rays);
+    let mut hashes: Vec<_> = scenes
         .into_iter()
         .map(|(name, scene, camera)| {
-            let run = |r: Render| hash(&r.image, r.stats.rays);
             let fast = Renderer::new(&scene, &camera).spp(3).max_depth(8).seed(5);
             let dyn_scene = scene.to_dyn::<DefaultRng>();
             let slow = Renderer::new(&dyn_scene, &camera).spp(3).max_depth(8).seed(5);
             (name, run(fast.render().unwrap()), run(slow.render().unwrap()))
         })
-        .collect()
+        .collect();
+    let (by_enum, by_trait) = (
+        parts::enum_scene::<F>().unwrap(),
+        parts::dyn_scene::<F>().unwrap(),
+    );
+    let fast = Renderer::new(&by_enum, &spec).spp(3).max_depth(8).seed(5);
+    let slow = Renderer::new(&by_trait, &spec).spp(3).max_depth(8).seed(5);
+    hashes.push((
+        "custom_shape",
+        run(fast.render().unwrap()),
+        run(slow.render().unwrap()),
+    ));
+    hashes
 }
 
-fn check<F: Float>(pinned: [(&str, u64); 6]) {
+fn check<F: Float>(pinned: [(&str, u64); 8]) {
     let got = hashes::<F>();
+    assert_eq!(got.len(), pinned.len());
     // The table to paste after a deliberate change (shown with --nocapture).
     for (name, fast, _) in &got {
         println!("{}: (\"{name}\", {fast:#018X}),", F::NAME);
@@ -74,6 +93,8 @@ fn f32_images_are_pinned() {
         ("plane_and_triangles", 0xB41C_2CE4_57F5_3C16),
         ("point_lights", 0xF2AF_762B_C8B5_B99B),
         ("random_spheres", 0xE73E_65C1_E05D_F64E),
+        ("meshes", 0xC360_7460_4DF6_82C3),
+        ("custom_shape", 0x2E4D_2BF3_41F7_6A3A),
     ]);
 }
 
@@ -86,6 +107,8 @@ fn f64_images_are_pinned() {
         ("plane_and_triangles", 0xF951_7DCB_33EC_0682),
         ("point_lights", 0xE146_23F0_27D9_BE17),
         ("random_spheres", 0x9ADB_DA2F_340B_34E2),
+        ("meshes", 0x9DC2_1D3F_5208_0515),
+        ("custom_shape", 0x44B7_805E_6B42_5C68),
     ]);
 }
 
@@ -100,5 +123,7 @@ fn double_double_images_are_pinned() {
         ("plane_and_triangles", 0x303C_887F_E0C4_6576),
         ("point_lights", 0x29F6_DF36_E637_79F6),
         ("random_spheres", 0x5E24_2E6B_69CE_52FE),
+        ("meshes", 0x0678_A18A_6A62_9F60),
+        ("custom_shape", 0xFAAA_C40F_7601_382C),
     ]);
 }

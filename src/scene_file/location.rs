@@ -2,7 +2,12 @@
 //! errors as the path of the field.
 
 use crate::error::Error;
+use serde::Deserialize;
+use serde_path_to_error::Segment;
+use std::ops::Range;
 use std::path::Path;
+use toml::Spanned;
+use toml::de::{DeString, DeTable, DeValue};
 
 /// The 1-based line and column (in characters) of byte `offset` of `text`; an offset
 /// past the end or inside a character counts as the end or that character.
@@ -17,107 +22,158 @@ pub fn line_column(text: &str, offset: usize) -> (usize, usize) {
     (line, before[line_start..].chars().count() + 1)
 }
 
-/// A TOML syntax or type error as [`Error::SceneFile`] at its line and column.
-pub fn toml_error(path: &Path, text: &str, e: &toml::de::Error) -> Error {
-    let message = e.message().trim_end();
-    let Some(span) = e.span() else {
-        return Error::SceneFile {
-            path: path.to_path_buf(),
-            location: "the whole file".into(),
-            message: message.to_string(),
-        };
+/// Reads `text` into `T`: a syntax error is reported at its line and column; a wrong type,
+/// an unknown key or a missing key at the field's path (`camera.vfov`, `objects[3]`) and
+/// the line and column of the offending value (or key, or table).
+pub fn read<'i, T: Deserialize<'i>>(file: &Path, text: &'i str) -> Result<T, Error> {
+    let doc = DeTable::parse(text).map_err(|e| error_at(file, text, e.span(), e.message(), &[]))?;
+    let doc = Spanned::new(doc.span(), DeValue::Table(doc.into_inner()));
+    let (mut at, message, mut span) = match deserialize::<T>(doc.clone()) {
+        Ok(value) => return Ok(value),
+        Err(failure) => failure,
     };
-    let message = message.replace('\n', " ");
-    let start = refine(text, span.start, &message);
-    let (line, column) = line_column(text, start);
-    // A wrong value's message names only the type; the key is what precedes it.
-    let message = match key_before(text, start) {
-        Some(key) if !message.contains(&format!("`{key}`")) => match message.split_once(": ") {
-            Some((entry, rest)) if !entry.contains(' ') => format!("{entry}.{key}: {rest}"),
-            _ => format!("`{key}`: {message}"),
-        },
-        _ => message,
+    if let Some(node) = lookup(&doc, &at) {
+        span = Some(node.span());
+        if let DeValue::Table(table) = node.get_ref()
+            && !message.starts_with("missing field")
+            && let Some((key, value)) = culprit::<T>(&doc, &at, table, &message)
+        {
+            if message.starts_with("unknown field") {
+                span = Some(key.span());
+            } else {
+                span = Some(value.span());
+                at.push(Step::Key(key.get_ref().to_string()));
+            }
+        }
+    }
+    Err(error_at(file, text, span, &message, &at))
+}
+
+/// One step of a field path: a key of a table or an index of an array.
+#[derive(Clone, Debug, PartialEq)]
+enum Step {
+    Key(String),
+    Index(usize),
+}
+
+/// Where reading failed: the path serde reached, the message, the span the TOML reader gave.
+type Failure = (Vec<Step>, String, Option<Range<usize>>);
+
+/// Deserializes the document `doc` (a table), keeping the path to a failure.
+fn deserialize<'i, T: Deserialize<'i>>(doc: Spanned<DeValue<'i>>) -> Result<T, Failure> {
+    let span = doc.span();
+    let DeValue::Table(table) = doc.into_inner() else {
+        unreachable!("a document is a table")
+    };
+    let reader = toml::Deserializer::from(Spanned::new(span, table));
+    serde_path_to_error::deserialize(reader).map_err(|e| {
+        let mut steps = e
+            .path()
+            .iter()
+            .filter_map(|s| match s {
+                Segment::Map { key } => Some(Step::Key(key.clone())),
+                Segment::Seq { index } => Some(Step::Index(*index)),
+                Segment::Enum { .. } | Segment::Unknown => None,
+            })
+            .collect::<Vec<_>>();
+        let e = e.into_inner();
+        let message = e.message().trim_end().replace('\n', " ");
+        // An unknown key is its table's mistake (the path of a tagged entry ends at the
+        // table too), so the key leaves the path.
+        if let Some(Step::Key(k)) = steps.last()
+            && message.starts_with(&format!("unknown field `{k}`"))
+        {
+            steps.pop();
+        }
+        (steps, message, e.span())
+    })
+}
+
+/// The value at `at`, if the document has one there.
+fn lookup<'a, 'i>(doc: &'a Spanned<DeValue<'i>>, at: &[Step]) -> Option<&'a Spanned<DeValue<'i>>> {
+    at.iter()
+        .try_fold(doc, |node, step| match (node.get_ref(), step) {
+            (DeValue::Table(t), Step::Key(k)) => t.get(k.as_str()),
+            (DeValue::Array(a), Step::Index(i)) => a.get(*i),
+            _ => None,
+        })
+}
+
+fn lookup_mut<'a, 'i>(
+    doc: &'a mut Spanned<DeValue<'i>>,
+    at: &[Step],
+) -> Option<&'a mut Spanned<DeValue<'i>>> {
+    at.iter()
+        .try_fold(doc, |node, step| match (node.get_mut(), step) {
+            (DeValue::Table(t), Step::Key(k)) => t.get_mut(k.as_str()),
+            (DeValue::Array(a), Step::Index(i)) => a.get_mut(*i),
+            _ => None,
+        })
+}
+
+/// The key of `table` (at `at`) that the error is about. Serde's path stops at a table it
+/// reads through a buffer (a `type`-tagged entry: `camera`, `objects[3]`), so the key is
+/// found by reading the file again with the table cut to its first keys, `type` first and
+/// the others in the order they are read: the shortest cut that fails the same way ends
+/// with the culprit.
+fn culprit<'a, 'i, T: Deserialize<'i>>(
+    doc: &Spanned<DeValue<'i>>,
+    at: &[Step],
+    table: &'a DeTable<'i>,
+    message: &str,
+) -> Option<(&'a Spanned<DeString<'i>>, &'a Spanned<DeValue<'i>>)> {
+    let tag = table.get_key_value("type");
+    let keys: Vec<_> = tag
+        .into_iter()
+        .chain(table.iter().filter(|(k, _)| k.get_ref() != "type"))
+        .collect();
+    let fails_the_same = |n: usize| {
+        let mut cut = doc.clone();
+        if let Some(DeValue::Table(t)) = lookup_mut(&mut cut, at).map(Spanned::get_mut) {
+            *t = keys[..n].iter().map(|&(k, v)| (k.clone(), v.clone())).collect();
+        }
+        matches!(deserialize::<T>(cut), Err((p, m, _)) if p == at && m == message)
+    };
+    let shortest = (usize::from(tag.is_some())..=keys.len()).find(|&n| fails_the_same(n))?;
+    keys.get(shortest.checked_sub(1)?).copied()
+}
+
+/// An [`Error::SceneFile`] at the line and column where `span` starts, the field path
+/// `at` (if any) leading the message.
+fn error_at(file: &Path, text: &str, span: Option<Range<usize>>, message: &str, at: &[Step]) -> Error {
+    let message = message.trim_end().replace('\n', " ");
+    let message = match path_text(at) {
+        path if path.is_empty() => message,
+        path => format!("{path}: {message}"),
+    };
+    let location = match span {
+        Some(span) => {
+            let (line, column) = line_column(text, span.start);
+            format!("line {line}, column {column}")
+        }
+        None => "the whole file".into(),
     };
     Error::SceneFile {
-        path: path.to_path_buf(),
-        location: format!("line {line}, column {column}"),
+        path: file.to_path_buf(),
+        location,
         message,
     }
 }
 
-/// A better start for an error inside an entry (`objects[3]: ...`,
-/// `materials.gold: ...`), which the TOML reader places at the start of the whole section:
-/// the entry's own header line and, for an unknown or wrong key named in the message,
-/// that key's line. Falls back to `offset` when the entry is not written with a header.
-fn refine(text: &str, offset: usize, message: &str) -> usize {
-    let Some((entry, rest)) = message.split_once(": ") else {
-        return offset;
-    };
-    let header = match entry.split_once('[') {
-        Some((name, index)) => index
-            .strip_suffix(']')
-            .and_then(|i| i.parse::<usize>().ok())
-            .map(|i| (format!("[[{name}]]"), i)),
-        None => entry.contains('.').then(|| (format!("[{entry}]"), 0)),
-    };
-    let Some((header, nth)) = header else {
-        return offset;
-    };
-    let lines = || {
-        text.split_inclusive('\n').scan(0, |at, line| {
-            let start = *at;
-            *at += line.len();
-            Some((start, line.trim()))
-        })
-    };
-    let Some(entry_start) = lines()
-        .filter(|(_, line)| line.starts_with(&header))
-        .nth(nth)
-        .map(|(start, _)| start)
-    else {
-        return offset;
-    };
-    // The key the message names: `unknown field `k``, or `in `k`` after a bad value.
-    let named = rest
-        .strip_prefix("unknown field `")
-        .or_else(|| rest.rsplit_once("in `").map(|(_, k)| k))
-        .and_then(|k| k.split_once('`'))
-        .map(|(k, _)| k);
-    let key_line = named.and_then(|k| {
-        lines()
-            .skip_while(|&(start, _)| start <= entry_start)
-            .take_while(|(_, line)| !line.starts_with('['))
-            .find(|(_, line)| {
-                line.strip_prefix(k)
-                    .is_some_and(|r| r.trim_start().starts_with('='))
-            })
-            .map(|(start, _)| start)
-    });
-    // A value of the wrong type: the line whose value is the one the message shows.
-    let shown = rest
-        .strip_prefix("invalid type: ")
-        .and_then(|r| r.split_once(", expected"))
-        .and_then(|(r, _)| r.split_once(' '))
-        .map(|(_, v)| v.trim_matches('`'));
-    let value = shown.and_then(|v| {
-        lines()
-            .skip_while(|&(start, _)| start <= entry_start)
-            .take_while(|(_, line)| !line.starts_with('['))
-            .find_map(|(start, _)| {
-                let line = text[start..].lines().next()?;
-                let (_, after) = line.split_once('=')?;
-                (after.trim() == v).then(|| start + line.len() - after.trim_start().len())
-            })
-    });
-    key_line.or(value).unwrap_or(entry_start)
-}
-
-/// The key of `key = value` when `offset` is where the value starts on its line.
-fn key_before(text: &str, offset: usize) -> Option<&str> {
-    let line_start = text.get(..offset)?.rfind('\n').map_or(0, |i| i + 1);
-    let key = text[line_start..offset].trim_end().strip_suffix('=')?.trim();
-    let bare = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-' || c == '.';
-    (!key.is_empty() && key.chars().all(bare)).then_some(key)
+/// `objects[3].radius`, as [`Field`] writes paths.
+fn path_text(at: &[Step]) -> String {
+    let mut text = String::new();
+    for step in at {
+        match step {
+            Step::Key(k) if text.is_empty() => text.push_str(k),
+            Step::Key(k) => {
+                text.push('.');
+                text.push_str(k);
+            }
+            Step::Index(i) => text.push_str(&format!("[{i}]")),
+        }
+    }
+    text
 }
 
 /// A field path such as `objects[3].radius`, built up as the builder walks the file.

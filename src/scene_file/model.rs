@@ -257,7 +257,7 @@ impl ObjectSpec {
 
 /// A mesh's scale: one factor for all axes (`scale = 2`) or one per axis (`[1, 2, 1]`).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(untagged, expecting = "a number or an array of three numbers")]
+#[serde(untagged, expecting = "expected a number or an array of three numbers")]
 pub enum Scale {
     /// The same factor on every axis.
     Uniform(f64),

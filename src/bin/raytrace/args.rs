@@ -1,6 +1,7 @@
 //! The command line: `raytrace render | check | advise | merge`.
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use raytrace::RenderSettings;
 use std::path::PathBuf;
 
 /// Most worker threads accepted: far more than the cores of any machine this runs on,
@@ -46,8 +47,8 @@ pub struct RenderArgs {
     /// Samples (rays) per pixel [default: the scene's]
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     pub spp: Option<u32>,
-    /// Most bounces per path [default: the scene's]
-    #[arg(long, value_name = "D")]
+    /// Most bounces per path, 0 to 1000 [default: the scene's]
+    #[arg(long, value_name = "D", value_parser = clap::value_parser!(u32).range(0..=i64::from(RenderSettings::MAX_DEPTH)))]
     pub max_depth: Option<u32>,
     /// Random seed [default: the scene's]
     #[arg(long, value_name = "S")]
@@ -181,12 +182,22 @@ mod tests {
     }
 
     #[test]
+    fn the_deepest_recursion_allowed_is_accepted() {
+        let cli = Cli::try_parse_from(["raytrace", "render", "s.toml", "--max-depth", "1000"]).unwrap();
+        let Command::Render(args) = cli.command else {
+            panic!("{cli:?}")
+        };
+        assert_eq!(args.max_depth, Some(RenderSettings::MAX_DEPTH));
+    }
+
+    #[test]
     fn bad_options_are_usage_errors() {
         for args in [
             &["raytrace", "render", "s.toml", "--threads", "0"][..],
             &["raytrace", "render", "s.toml", "--threads", "100000"],
             &["raytrace", "render", "s.toml", "--width", "0"],
             &["raytrace", "render", "s.toml", "--spp", "0"],
+            &["raytrace", "render", "s.toml", "--max-depth", "1001"],
             &["raytrace", "render", "s.toml", "--precision", "f16"],
             &["raytrace", "render", "s.toml", "--format", "jpg"],
             &["raytrace", "merge", "--out", "x.png"],

@@ -9,7 +9,8 @@
 //! ```
 //!
 //! Exit codes: 0 on success, 1 when the work fails (a bad scene, an unwritable file), 2 for
-//! a usage error, 130 when interrupted (no temporary file is left behind).
+//! a usage error (an option's value the scene cannot take included: `--width 41` for the
+//! spec's 2:1 camera), 130 when interrupted (no temporary file is left behind).
 
 mod args;
 mod inspect;
@@ -26,17 +27,35 @@ fn main() -> ExitCode {
     if let Err(message) = output::check_usage(&cli.command) {
         Cli::command().error(ErrorKind::ArgumentConflict, message).exit();
     }
-    let result = raytrace::image::on_interrupt_remove_temporary_files().and_then(|()| match &cli.command {
-        Command::Render(args) => render::run(args),
-        Command::Check { scene } => inspect::check(scene),
-        Command::Advise { scene } => inspect::advise(scene),
-        Command::Merge(args) => output::merge(args),
-    });
+    let result = raytrace::image::on_interrupt_remove_temporary_files()
+        .map_err(Failure::from)
+        .and_then(|()| match &cli.command {
+            Command::Render(args) => render::run(args),
+            Command::Check { scene } => inspect::check(scene).map_err(Failure::from),
+            Command::Advise { scene } => inspect::advise(scene).map_err(Failure::from),
+            Command::Merge(args) => output::merge(args).map_err(Failure::from),
+        });
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
+        Err(Failure::Usage(message)) => Cli::command().error(ErrorKind::ValueValidation, message).exit(),
+        Err(Failure::Work(e)) => {
             eprintln!("raytrace: error: {e}");
             ExitCode::FAILURE
         }
+    }
+}
+
+/// Why a command did not succeed: the user asked for something it cannot do (exit 2), or
+/// the work failed (exit 1).
+pub enum Failure {
+    /// A mistake on the command line that clap cannot see, naming the option.
+    Usage(String),
+    /// The work failed.
+    Work(raytrace::Error),
+}
+
+impl From<raytrace::Error> for Failure {
+    fn from(e: raytrace::Error) -> Self {
+        Self::Work(e)
     }
 }

@@ -20,29 +20,20 @@ pub struct Target {
 }
 
 impl Target {
-    /// The output of `raytrace render`: `--out`, or a name made of the scene's and the
-    /// settings, so renders with other settings do not overwrite each other.
-    pub fn for_render(args: &RenderArgs, file: &SceneFile) -> Result<Self> {
+    /// The output of `raytrace render`: `--out`, or [`default_name`].
+    pub fn for_render(args: &RenderArgs, file: &SceneFile, precision: Precision) -> Result<Self> {
         let encoding = encoding(args.encoding);
-        if let Some((k, n)) = args.tile {
-            let path = args
-                .out
-                .clone()
-                .unwrap_or_else(|| PathBuf::from(format!("{}-tile{k}of{n}.rtile", stem(args, file))));
-            return Ok(Self {
-                path,
-                format: None,
-                encoding,
-            });
-        }
-        let format = choose_format(args.format, args.out.as_deref(), Format::Png)?;
+        let format = match args.tile {
+            Some(_) => None,
+            None => Some(choose_format(args.format, args.out.as_deref(), Format::Png)?),
+        };
         let path = args
             .out
             .clone()
-            .unwrap_or_else(|| PathBuf::from(format!("{}.{}", stem(args, file), format.extension())));
+            .unwrap_or_else(|| default_name(args, file, precision, format));
         Ok(Self {
             path,
-            format: Some(format),
+            format,
             encoding,
         })
     }
@@ -124,23 +115,58 @@ pub fn scene_hash(file: &SceneFile) -> String {
     format!("{hash:016x}")
 }
 
-/// The default file name's stem: the scene's, then the settings that change the image.
-fn stem(args: &RenderArgs, file: &SceneFile) -> String {
+/// The name of a render without `--out`: the scene's, then every setting that changes the
+/// file's bytes (`-linear` only where the format stores sRGB otherwise), so renders with
+/// other settings do not overwrite each other: `matte_spheres-w800-16spp-d10-seed0-f32.png`,
+/// `…-f64-linear.ppm`, `…-f64-tile2of4.rtile`. `format` is `None` for a tile.
+fn default_name(
+    args: &RenderArgs,
+    file: &SceneFile,
+    precision: Precision,
+    format: Option<Format>,
+) -> PathBuf {
     let name = args
         .scene
         .file_stem()
         .map_or_else(|| "render".into(), |s| s.to_string_lossy().into_owned());
     let r = file.render();
-    format!("{name}-w{}-{}spp-d{}-seed{}", r.width, r.spp, r.max_depth, r.seed)
+    let mut name = format!(
+        "{name}-w{}-{}spp-d{}-seed{}-{precision}",
+        r.width, r.spp, r.max_depth, r.seed
+    );
+    match (format, args.tile) {
+        (Some(f), _) => {
+            if args.encoding == EncodingArg::Linear && matches!(f, Format::Ppm | Format::Png) {
+                name.push_str("-linear");
+            }
+            name.push('.');
+            name.push_str(f.extension());
+        }
+        (None, Some((k, n))) => name.push_str(&format!("-tile{k}of{n}.{TILE_EXTENSION}")),
+        (None, None) => unreachable!("a render without a format writes a tile"),
+    }
+    PathBuf::from(name)
 }
+
+/// The extension of tile files.
+const TILE_EXTENSION: &str = "rtile";
 
 /// The usage mistakes clap cannot see: an output format that contradicts the output's name.
 pub fn check_usage(command: &Command) -> Result<(), String> {
     match command {
-        Command::Render(args) if args.tile.is_some() => match args.format {
-            Some(_) => Err("--format does not apply to --tile: a tile file holds linear f64 values".into()),
-            None => Ok(()),
-        },
+        Command::Render(args) if args.tile.is_some() => {
+            if args.format.is_some() {
+                return Err("--format does not apply to --tile: a tile file holds linear f64 values".into());
+            }
+            match &args.out {
+                Some(out) if !has_extension(out, TILE_EXTENSION) => Err(format!(
+                    "--tile writes a tile file, not an image: name it .{TILE_EXTENSION} (got --out {}); \
+                     `raytrace merge` makes the image from the tiles",
+                    out.display()
+                )),
+                _ => Ok(()),
+            }
+        }
         Command::Render(args) => format_for(args.format, args.out.as_deref(), Format::Png).map(drop),
         Command::Merge(args) => format_for(args.format, Some(&args.out), Format::Png).map(drop),
         _ => Ok(()),
@@ -166,6 +192,13 @@ fn format_for(asked: Option<Format>, out: Option<&Path>, default: Format) -> Res
             _ => Ok(default),
         },
     }
+}
+
+/// Whether `path` ends in `.ext` (in any case).
+fn has_extension(path: &Path, ext: &str) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case(ext))
 }
 
 /// [`format_for`], after [`check_usage`] has reported its errors.

@@ -1,39 +1,49 @@
 //! `raytrace render`: a scene file, the command line's overrides, one image or tile.
 
+use crate::Failure;
 use crate::args::{PrecisionArg, RenderArgs};
 use crate::output::{self, Target};
 use raytrace::advice::Precision;
 use raytrace::image::{TileHeader, check_memory};
 use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
-use raytrace::{Camera, Float, Rect, Render, Renderer, Result};
+use raytrace::{Camera, Error, Float, Rect, Render, Renderer, Result};
 
 /// Loads the scene, applies the overrides, checks the output before rendering, renders
 /// and writes.
-pub fn run(args: &RenderArgs) -> Result<()> {
+///
+/// # Errors
+/// A value the command line gave that the scene cannot take (an odd `--width` for the
+/// spec's camera) is a usage error naming the option; anything else a failure.
+pub fn run(args: &RenderArgs) -> Result<(), Failure> {
     let mut file = SceneFile::load(&args.scene)?;
     override_settings(&mut file, args)?;
-    let target = Target::for_render(args, &file)?;
-    target.check_writable()?;
+    render(args, &file).map_err(|e| blame_option(e, args))
+}
+
+/// The precision resolved, the output checked, the render and its file.
+fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
     let precision = match file.render().precision {
         FilePrecision::F32 => Precision::F32,
         FilePrecision::F64 => Precision::F64,
         FilePrecision::Auto => {
-            let advice = advise_precision(&file)?;
+            let advice = advise_precision(file)?;
             eprintln!("precision auto: {} ({})", advice.recommended, summary(&advice));
             advice.recommended
         }
     };
+    let target = Target::for_render(args, file, precision)?;
+    target.check_writable()?;
     let pool = output::pool(args.threads)?;
     let (render, camera) = pool.install(|| match precision {
-        Precision::F32 => render_in::<f32>(&file, args),
-        Precision::F64 => render_in::<f64>(&file, args),
+        Precision::F32 => render_in::<f32>(file, args),
+        Precision::F64 => render_in::<f64>(file, args),
     })?;
     let settings = output::describe(file.render(), precision);
     match args.tile {
         None => target.write_image(&render.image)?,
         Some(_) => {
             let header = TileHeader {
-                scene: output::scene_hash(&file),
+                scene: output::scene_hash(file),
                 settings: settings.clone(),
                 image_width: camera.0,
                 image_height: camera.1,
@@ -52,12 +62,32 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     Ok(())
 }
 
+/// An error at a `[render]` field the command line set, as a usage error naming the option.
+fn blame_option(e: Error, args: &RenderArgs) -> Failure {
+    if let Error::SceneFile {
+        location, message, ..
+    } = &e
+    {
+        let option = match location.as_str() {
+            "render.width" => args.width.map(|w| ("--width", w.to_string())),
+            "render.spp" => args.spp.map(|n| ("--spp", n.to_string())),
+            "render.max_depth" => args.max_depth.map(|d| ("--max-depth", d.to_string())),
+            "render.seed" => args.seed.map(|s| ("--seed", s.to_string())),
+            _ => None,
+        };
+        if let Some((option, value)) = option {
+            return Failure::Usage(format!("invalid value '{value}' for '{option}': {message}"));
+        }
+    }
+    Failure::Work(e)
+}
+
 /// The command line's values replace the scene file's.
-fn override_settings(file: &mut SceneFile, args: &RenderArgs) -> Result<()> {
+fn override_settings(file: &mut SceneFile, args: &RenderArgs) -> Result<(), Failure> {
     let r = file.render_mut();
     if let Some(w) = args.width {
         r.width = usize::try_from(w)
-            .map_err(|_| raytrace::Error::InvalidSettings(format!("width {w} is too large")))?;
+            .map_err(|_| Failure::Usage(format!("invalid value '{w}' for '--width': too large")))?;
     }
     if let Some(spp) = args.spp {
         r.spp = spp;
