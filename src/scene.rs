@@ -215,7 +215,7 @@ impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
         M: Material<F, R>,
     {
         self.emitters
-            .get_or_init(|| Emitters::new::<F, S, M, R>(&self.objects))
+            .get_or_init(|| Emitters::new::<F, S, M, R>(self.objects.iter().map(|o| (&o.shape, &o.material))))
     }
 
     /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.

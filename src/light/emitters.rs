@@ -2,7 +2,6 @@
 
 use crate::float::Float;
 use crate::material::{Emission, Material};
-use crate::scene::Object;
 use crate::shape::Hittable;
 use rand::Rng;
 
@@ -29,23 +28,24 @@ pub struct Emitters {
 }
 
 impl Emitters {
-    /// The emitters among `objects`. If their powers sum to more than `f64` holds, none is
-    /// sampled (the light is still found by the rays that hit it).
-    pub(crate) fn new<F, S, M, R>(objects: &[Object<S, M>]) -> Self
+    /// The emitters among a scene's objects, given as `(shape, material)` in the scene's
+    /// order. If their powers sum to more than `f64` holds, none is sampled (the light is
+    /// still found by the rays that hit it).
+    pub(crate) fn new<'a, F, S, M, R>(objects: impl Iterator<Item = (&'a S, &'a M)>) -> Self
     where
         F: Float,
-        S: Hittable<F>,
-        M: Material<F, R>,
+        S: Hittable<F> + 'a,
+        M: Material<F, R> + 'a,
         R: Rng + ?Sized,
     {
         let mut table = Self::default();
         let mut powers = Vec::new();
-        for (i, object) in objects.iter().enumerate() {
+        for (i, (shape, material)) in objects.enumerate() {
             // The emission first: a mesh sums its areas only when it is asked to.
-            let Some(emission) = object.material.emission() else {
+            let Some(emission) = material.emission() else {
                 continue;
             };
-            if let Some(p) = power(object.shape.area(), emission) {
+            if let Some(p) = power(shape.area(), emission) {
                 table.total += p;
                 table.objects.push(i as u32);
                 table.cumulative.push(table.total);
@@ -117,14 +117,15 @@ mod tests {
     use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
     use crate::vec3::Vec3;
 
-    fn object(
-        shape: impl Into<ShapeKind<f64>>,
-        material: impl Into<MaterialKind<f64>>,
-    ) -> Object<ShapeKind<f64>, MaterialKind<f64>> {
-        Object {
-            shape: shape.into(),
-            material: material.into(),
-        }
+    /// A scene's object, as `Emitters::new` sees it.
+    type Object = (ShapeKind<f64>, MaterialKind<f64>);
+
+    fn object(shape: impl Into<ShapeKind<f64>>, material: impl Into<MaterialKind<f64>>) -> Object {
+        (shape.into(), material.into())
+    }
+
+    fn table(objects: &[Object]) -> Emitters {
+        Emitters::new::<f64, _, _, DefaultRng>(objects.iter().map(|(s, m)| (s, m)))
     }
 
     #[test]
@@ -142,7 +143,7 @@ mod tests {
             object(unit, light(2.0).two_sided(true)),
             object(sphere(2.0), light(0.0)),
         ];
-        let e = Emitters::new::<f64, _, _, DefaultRng>(&objects);
+        let e = table(&objects);
         assert_eq!(e.objects(), &[1, 3]);
         // Φ = π·L·s·A: the sphere π·1·1·4π, the triangle π·2·2·½.
         let (sphere_power, triangle_power) = (4.0 * std::f64::consts::PI, 2.0);
@@ -152,21 +153,13 @@ mod tests {
         assert_eq!(e.choose(p * 0.999), (1, e.probabilities()[0]));
         assert_eq!(e.choose(p * 1.001).0, 3);
         assert_eq!(e.choose(1.0 - 1e-16).0, 3);
-        let emission = |o: &Object<ShapeKind<f64>, MaterialKind<f64>>| {
-            Material::<f64, DefaultRng>::emission(&o.material).unwrap()
-        };
+        let emission = |o: &Object| Material::<f64, DefaultRng>::emission(&o.1).unwrap();
         for (k, &i) in e.objects().iter().enumerate() {
             let o = &objects[i as usize];
-            assert_eq!(
-                e.probability_of(o.shape.area(), emission(o)),
-                e.probabilities()[k]
-            );
+            assert_eq!(e.probability_of(o.0.area(), emission(o)), e.probabilities()[k]);
         }
-        assert_eq!(
-            e.probability_of(objects[2].shape.area(), emission(&objects[2])),
-            0.0
-        );
-        let none = Emitters::new::<f64, _, _, DefaultRng>(&objects[..1]);
+        assert_eq!(e.probability_of(objects[2].0.area(), emission(&objects[2])), 0.0);
+        let none = table(&objects[..1]);
         assert!(none.is_empty());
     }
 }
