@@ -16,8 +16,9 @@ use std::num::FpCategory;
 use std::ops::{Add, Div, Mul, Neg, Rem, Sub};
 use twofloat::TwoFloat;
 
-/// A double-double scalar (about 104 significant bits) with correctly working division.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// A double-double scalar (about 104 significant bits) with correctly working division and
+/// comparisons.
+#[derive(Clone, Copy, Debug, Default)]
 pub struct DoubleDouble(pub TwoFloat);
 
 impl DoubleDouble {
@@ -50,9 +51,25 @@ impl From<f64> for DoubleDouble {
     }
 }
 
+/// Ordered as the real numbers they stand for: the high words first, as `f64`s (so `−∞` is
+/// below every finite value), then, between equal finite high words, the low words.
+/// `twofloat` 0.8.4 orders every infinity after every finite value, `−∞` too, and calls
+/// `+∞` and `−∞` equal; a box's empty side (`−∞`) then grew to no box at all.
 impl PartialOrd for DoubleDouble {
     fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        self.0.partial_cmp(&o.0)
+        if self.lo().is_nan() || o.lo().is_nan() {
+            return None;
+        }
+        match self.hi().partial_cmp(&o.hi())? {
+            Ordering::Equal if self.hi().is_finite() => self.lo().partial_cmp(&o.lo()),
+            order => Some(order),
+        }
+    }
+}
+
+impl PartialEq for DoubleDouble {
+    fn eq(&self, o: &Self) -> bool {
+        self.partial_cmp(o) == Some(Ordering::Equal)
     }
 }
 
@@ -224,6 +241,22 @@ mod tests {
                 "{x} / {y}: {residual:?}"
             );
         }
+    }
+
+    /// Infinities order as they do in `f64`: `−∞ < x < +∞` for every finite `x`, and
+    /// `+∞ ≠ −∞` (which `twofloat` gets wrong).
+    #[test]
+    fn comparisons_with_infinities() {
+        use num_traits::Float;
+        let (inf, ninf, x) = (DoubleDouble::infinity(), DoubleDouble::neg_infinity(), dd(3.0));
+        assert!(ninf < x && x < inf && ninf < inf);
+        assert!(!(x < ninf) && !(inf < x));
+        assert_ne!(inf, ninf);
+        assert_eq!(inf, inf);
+        assert!(dd(1.0) + dd(1e-20) > dd(1.0), "the low words break ties");
+        assert_eq!(DoubleDouble::nan().partial_cmp(&x), None);
+        // `twofloat`'s own order, which this type replaces.
+        assert!(TwoFloat::NEG_INFINITY > TwoFloat::from(3.0));
     }
 
     #[test]
