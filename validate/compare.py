@@ -1,7 +1,7 @@
 """The cross-check against Mitsuba 3: every scene, both precisions, the power checks and the
 analytic checks, into a table. Run through validate/run.sh (which sets up Mitsuba first).
 
-    python validate/compare.py --quick            # CI: 64 px wide, 256 spp, three scenes
+    python validate/compare.py --quick            # CI: 64 px wide, 256 spp, four scenes
     python validate/compare.py                    # full: every scene, 128 px, 1024 spp
     python validate/compare.py my_scene.toml ...  # those scenes (with the mode's settings)
 
@@ -33,7 +33,7 @@ SEEDS = (1, 2)  # fixed: the verdicts are the same on every run
 MODES = {
     "quick": {"width": 64, "spp": 256,
               "scenes": ["scenes/matte_spheres.toml", "validate/scenes/glass_heavy.toml",
-                         "scenes/point_lights.toml"]},
+                         "scenes/point_lights.toml", "scenes/cornell_box.toml"]},
     "full": {"width": 128, "spp": 1024, "scenes": None},  # None: every scene there is
 }
 DRAGON_MESH = ROOT / "assets/meshes/dragon_vrip_res2.ply"
@@ -54,7 +54,7 @@ def compare_scene(scene, work: Path, width: int, spp: int, precisions, rows, png
     for prec in precisions:
         o = [renders.ours_image(exact, work, seed=s, precision=prec, **kw) for s in SEEDS]
         v = stats.compare(o[0], o[1], m[0], m[1])
-        rows.append(report.row("agreement", scene.name, prec, "", width, o[0].shape, spp,
+        rows.append(report.row("agreement", scene, prec, "", width, o[0].shape, spp,
                                depth, v))
         pngs.append((f"{scene.name}-{prec}", o, m, v))
     schlick = [mat for mat in scene.materials.values()
@@ -62,7 +62,7 @@ def compare_scene(scene, work: Path, width: int, spp: int, precisions, rows, png
     if schlick:  # the scene as written asks for Schlick: measure what that changes
         o = [renders.ours_image(scene, work, seed=s, precision="f64", **kw) for s in SEEDS]
         v = stats.compare(o[0], o[1], m[0], m[1])
-        rows.append(report.row("schlick", scene.name, "f64", "the file's Schlick reflectance",
+        rows.append(report.row("schlick", scene, "f64", "the file's Schlick reflectance",
                                width, o[0].shape, spp, depth, v))
     return m
 
@@ -71,7 +71,7 @@ def power_checks(work: Path, width: int, spp: int, refs: dict, rows, pngs):
     """Each mistake must be rejected; the same comparison without it passed above."""
     def check(name, scene, injection, o, m):
         v = stats.compare(o[0], o[1], m[0], m[1])
-        rows.append(report.row("power", scene.name, "f64", f"{name}: {injection}", width,
+        rows.append(report.row("power", scene, "f64", f"{name}: {injection}", width,
                                o[0].shape, spp, scene.render["max_depth"], v))
         pngs.append((f"power-{name}", o, m, v))
 
@@ -95,6 +95,11 @@ def power_checks(work: Path, width: int, spp: int, refs: dict, rows, pngs):
             mat["fresnel"] = "schlick"
     check("schlick", glass, "Schlick instead of exact Fresnel in the TOML", ours_f64(sch),
           refs["glass_heavy"])
+    cornell = scene_model.load(ROOT / "scenes/cornell_box.toml")
+    dim = cornell.copy()
+    dim.materials["light"]["radiance"] = [r * 0.98 for r in dim.materials["light"]["radiance"]]
+    check("emitter", cornell, "the ceiling light's radiance x 0.98 in the TOML", ours_f64(dim),
+          refs["cornell_box"])
     d = glass.render["max_depth"]
     for delta in (-1, 1):
         check(f"depth{delta:+d}", glass, f"max_depth {d}{delta:+d} in the TOML "
@@ -105,7 +110,7 @@ def power_checks(work: Path, width: int, spp: int, refs: dict, rows, pngs):
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scenes", nargs="*", help="scene files (default: the mode's)")
-    ap.add_argument("--quick", action="store_true", help="CI mode: small, three scenes")
+    ap.add_argument("--quick", action="store_true", help="CI mode: small, four scenes")
     ap.add_argument("--out", type=Path, help="results folder (default: validate/work/<mode>"
                     " for quick, validate/results for full)")
     ap.add_argument("--work", type=Path, default=HERE / "work", help="render cache")

@@ -16,6 +16,8 @@
 | plane (infinite)                       | a mesh of rings around the eye, out to 1e6 (plane_mesh)|
 | triangles, meshes                      | one in-memory mesh per material, face normals          |
 | point light, intensity I               | `point`, intensity I (both: A/pi I cos/d^2)            |
+| emissive, radiance L, albedo A         | `area` emitter L (front face only) on a twosided       |
+|                                        | `diffuse` A; `max_depth` as is (see mitsuba_depth)     |
 
 Each mapping is tested in validate/tests/ (test_camera, test_depth_and_light, test_envmap,
 test_scene_files) and by the comparison itself (compare.py).
@@ -46,11 +48,31 @@ def rgb(v) -> dict:
     return {"type": "rgb", "value": [float(x) for x in v]}
 
 
-def mitsuba_depth(max_depth: int) -> int:
+def mitsuba_depth(max_depth: int, surface_emitters: bool = False) -> int:
     """Our `max_depth` counts bounces: a path may reflect `max_depth` times, so it has at
-    most `max_depth + 1` segments. Mitsuba's `max_depth` counts segments ("1: only
-    directly visible emitters, 2: direct illumination"). Proved by test_conventions.py."""
-    return max_depth + 1
+    most `max_depth + 1` segments, the last one reaching the sky or a point light. Mitsuba's
+    `max_depth` counts segments ("1: only directly visible emitters, 2: direct
+    illumination"). An emissive surface, though, is a hit, and the spec blacks out every
+    hit after `max_depth` bounces: its light counts on at most `max_depth` segments, which
+    is Mitsuba's `max_depth` unchanged. Both proved by test_depth_and_light.py."""
+    return max_depth if surface_emitters else max_depth + 1
+
+
+def scene_depth(scene: Scene, max_depth: int) -> int:
+    """Mitsuba's `max_depth` for ours in `scene`."""
+    return mitsuba_depth(max_depth, surface_emitters(scene))
+
+
+def surface_emitters(scene: Scene) -> bool:
+    """Whether an object of `scene` is emissive. Such a scene maps `max_depth` one way, the
+    sky and point lights the other (mitsuba_depth), so it may have neither."""
+    emits = any(scene.materials[o["material"]]["type"] == "emissive" for o in scene.objects)
+    bg = scene.background
+    if emits and (scene.lights or bg["type"] == "sky" or any(c > 0 for c in bg["color"])):
+        raise ValueError(f"{scene.name}: emissive surfaces beside point lights or a lit "
+                         "background count max_depth two ways; Mitsuba's one max_depth "
+                         "cannot match both")
+    return emits
 
 
 def sky_bitmap(horizon, zenith, rows: int = SKY_ROWS, cols: int = SKY_COLUMNS) -> np.ndarray:
@@ -63,7 +85,7 @@ def sky_bitmap(horizon, zenith, rows: int = SKY_ROWS, cols: int = SKY_COLUMNS) -
 
 
 def bsdf(m: dict) -> dict:
-    if m["type"] == "lambertian":
+    if m["type"] in ("lambertian", "emissive"):  # an emitter reflects as a matte surface
         return {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": rgb(m["albedo"])}}
     if m["type"] == "mirror":
         return {"type": "twosided", "bsdf": {"type": "conductor", "material": "none",
@@ -114,9 +136,21 @@ def plane_mesh(point, normal, centre) -> tuple[np.ndarray, np.ndarray]:
     return np.array(verts), np.array(tris, dtype=np.int64)
 
 
+def emitter(m: dict) -> dict | None:
+    """Mitsuba's `area` emitter gives off light from the front face only, as ours does
+    unless `two_sided`: that has no one-object equivalent, so it is refused."""
+    if m["type"] != "emissive":
+        return None
+    if m["two_sided"]:
+        raise ValueError("a two-sided emitter has no Mitsuba equivalent (area is one-sided)")
+    return {"type": "area", "radiance": rgb(m["radiance"])}
+
+
 def _mesh(name: str, verts: np.ndarray, tris: np.ndarray, material: dict) -> mi.Mesh:
     props = mi.Properties()
     props["bsdf"] = mi.load_dict(bsdf(material))
+    if (e := emitter(material)) is not None:
+        props["emitter"] = mi.load_dict(e)
     props["face_normals"] = True
     mesh = mi.Mesh(name, len(verts), len(tris), props=props,
                    has_vertex_normals=False, has_vertex_texcoords=False)
@@ -155,13 +189,13 @@ def sensor(scene: Scene, width: int, spp: int, shift: float = 0.0) -> dict:
 
 def to_mitsuba(scene: Scene, width: int | None = None, spp: int = 64,
                max_depth: int | None = None, shift: float = 0.0,
-               depth_map=mitsuba_depth) -> dict:
+               depth_map=None) -> dict:
     """The Mitsuba scene dict (call mi.load_dict on it). `width`, `spp`, `max_depth`
     override the file's (our meaning of max_depth); `shift` and `depth_map` exist for the
     power checks' deliberate mistakes."""
     width = scene.render["width"] if width is None else width
     depth = scene.render["max_depth"] if max_depth is None else max_depth
-    md = depth_map(depth)
+    md = depth_map(depth) if depth_map else scene_depth(scene, depth)
     out = {"type": "scene",
            "integrator": {"type": "path", "max_depth": md,
                           # Russian roulette never starts: every path runs to max_depth.
@@ -182,6 +216,8 @@ def to_mitsuba(scene: Scene, width: int | None = None, spp: int = 64,
         if o["type"] == "sphere":
             out[f"object_{k}"] = {"type": "sphere", "center": [float(c) for c in o["center"]],
                                   "radius": float(o["radius"]), "bsdf": bsdf(m)}
+            if (e := emitter(m)) is not None:
+                out[f"object_{k}"]["emitter"] = e
         elif o["type"] == "plane":
             v, t = plane_mesh(o["point"], o["normal"], eye(scene))
             out[f"object_{k}"] = _mesh(f"plane_{k}", v, t, m)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import hashlib
 import time
+from functools import partial
 from pathlib import Path
 
 import mitsuba as mi
@@ -31,10 +32,10 @@ def _converter_hash() -> str:
 
 
 def mitsuba(scene: Scene, work: Path, *, seed: int, width: int, spp: int, max_depth: int,
-            shift: float = 0.0, depth_map=convert.mitsuba_depth) -> np.ndarray:
+            shift: float = 0.0, depth_map=None) -> np.ndarray:
     """Mitsuba's image of `scene` (scalar_rgb), float64 (h, w, 3)."""
     key = f"{to_toml(scene)}|{seed}|{width}|{spp}|{max_depth}|{shift}|" \
-          f"{depth_map(max_depth)}|{mi.variant()}|{_converter_hash()}"
+          f"{(depth_map or partial(convert.scene_depth, scene))(max_depth)}|{mi.variant()}|{_converter_hash()}"
     path = work / "mitsuba" / f"{scene.name}-{hashlib.sha256(key.encode()).hexdigest()[:16]}.npy"
     if path.exists():
         return np.load(path)

@@ -13,6 +13,7 @@ import mitsuba as mi
 import convert
 import images
 import stats
+from scene_model import Scene
 
 COLUMNS = ["kind", "scene", "precision", "injection", "size", "spp", "max_depth",
            "mitsuba_max_depth", "mean_ours", "mean_mitsuba", "t_r", "t_g", "t_b",
@@ -24,16 +25,16 @@ def _rgb(v) -> str:
     return " ".join(f"{x:.4f}" for x in v)
 
 
-def row(kind, scene, precision, injection, width, shape, spp, depth, v: stats.Verdict) -> dict:
+def row(kind, scene: Scene, precision, injection, width, shape, spp, depth, v: stats.Verdict) -> dict:
     if kind == "agreement":
         verdict = "pass" if v.passed else "FAIL"
     elif kind == "power":
         verdict = "rejected" if not v.passed else "NOT REJECTED"
     else:  # informational: what the file's Schlick reflectance changes
         verdict = "differs" if not v.passed else "within noise"
-    return {"kind": kind, "scene": scene, "precision": precision, "injection": injection,
+    return {"kind": kind, "scene": scene.name, "precision": precision, "injection": injection,
             "size": f"{shape[1]}x{shape[0]}", "spp": spp, "max_depth": depth,
-            "mitsuba_max_depth": convert.mitsuba_depth(depth),
+            "mitsuba_max_depth": convert.scene_depth(scene, depth),
             "mean_ours": _rgb(v.mean_ours), "mean_mitsuba": _rgb(v.mean_mitsuba),
             "t_r": f"{v.z_channel[0]:.2f}", "t_g": f"{v.z_channel[1]:.2f}",
             "t_b": f"{v.z_channel[2]:.2f}", "block_t_max": f"{v.block_t_max:.2f}",

@@ -91,6 +91,10 @@ def load(path: str | Path) -> Scene:
             m.setdefault("fresnel", "schlick")
         elif m["type"] in ("mirror", "lambertian"):
             m["albedo"] = _f3(m["albedo"])
+        elif m["type"] == "emissive":
+            m["radiance"] = _f3(m["radiance"])
+            m["albedo"] = _f3(m.get("albedo", [0, 0, 0]))
+            m.setdefault("two_sided", False)
         else:
             raise ValueError(f"{path}: material {name}: unknown type {m['type']!r}")
         materials[name] = m

@@ -87,6 +87,66 @@ def test_a_path_of_n_bounces_needs_depth_n_here_and_n_plus_1_in_mitsuba(
     assert convert.mitsuba_depth(n) == n + 1
 
 
+@pytest.mark.parametrize("n", [0, 1, 3])
+def test_an_emitter_after_n_bounces_needs_depth_n_plus_1_in_both(n, scene_from, render_ours):
+    """The chain of n mirrors sends the ray up into an emissive square facing down, over a
+    black background: the spec blacks out a hit after max_depth bounces, emitter or not,
+    so both need max_depth n + 1, and the converter passes max_depth on unchanged."""
+    tris = _chain(n)
+    # The last mirror's centre: the mean of its two triangles' six corners.
+    top = np.array([0.0, 0.0, -2.0]) if n == 0 else np.concatenate(tris[-2:]).mean(axis=0)
+    up = np.array([0.0, 0.0, -1.0]) if n == 0 else np.array([0.0, 1.0, 0.0])
+    centre = top + 1.5 * up
+    t1 = np.cross(up, [0.3, 0.5, 0.7])
+    t1 /= np.linalg.norm(t1)
+    t2 = np.cross(t1, up)  # (t1, t2) counter-clockwise seen from below: faces -up
+    c = [centre + 0.4 * (a * t1 + b * t2) for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    objs = "".join(
+        f'[[objects]]\ntype = "triangle"\na = {_l(a)}\nb = {_l(b)}\nc = {_l(c)}\n'
+        f'material = "{m}"\n'
+        for (a, b, c), m in [*((t, "mirror") for t in tris),
+                             ((c[0], c[1], c[2]), "lamp"), ((c[0], c[2], c[3]), "lamp")])
+    scene = scene_from(f"""
+[camera]
+type = "look_at"
+from = [0, 0, 0]
+at = [0, 0, -1]
+vfov = 0.01
+aspect = 2
+[background]
+type = "solid"
+color = [0, 0, 0]
+[materials.mirror]
+type = "mirror"
+albedo = [{ALBEDO}, {ALBEDO}, {ALBEDO}]
+[materials.lamp]
+type = "emissive"
+radiance = [2, 3, 4]
+{objs}""", name=f"lamp{n}")
+    want = ALBEDO ** n * np.array([2.0, 3.0, 4.0])
+    assert convert.surface_emitters(scene) and convert.scene_depth(scene, 5) == 5
+
+    def ours(d):
+        img = render_ours(scene, 4, spp=1, max_depth=d)
+        assert np.allclose(img, want if d >= n + 1 else 0.0, rtol=1e-6), (d, img[0, 0])
+        return img.mean()
+
+    def mits(d):
+        img = convert.render(scene, seed=0, width=4, spp=4, max_depth=d)  # as is
+        assert np.allclose(img, want if d >= n + 1 else 0.0, rtol=1e-6), (d, img[0, 0])
+        return img.mean()
+
+    assert _first_lit(ours, range(0, 6)) == n + 1
+    assert _first_lit(mits, range(0, 6)) == n + 1
+
+
+def test_emitters_beside_point_lights_are_refused(scene_from):
+    scene = scene_from(LIT.format(x=0.0).replace('type = "lambertian"', 'type = "emissive"\n'
+                                                 'radiance = [1, 1, 1]'))
+    with pytest.raises(ValueError, match="two ways"):
+        convert.scene_depth(scene, 3)
+
+
 LIT = """
 [camera]
 type = "look_at"
