@@ -1,11 +1,27 @@
 #!/usr/bin/env bash
 # Builds the report: report/report.pdf from report/report.typ, with Typst from PyPI (pinned).
 #
-#   bash report/build.sh             compile report/report.pdf from the committed figures
-#   bash report/build.sh --figures   first regenerate every figure, then compile (~30 s on 2 cores)
+#   bash report/build.sh             compile report/report.pdf from the committed figures and data
+#   bash report/build.sh --data      first copy the data made outside report/ into report/data/
+#   bash report/build.sh --figures   first regenerate every figure and table (implies --data;
+#                                    ~10 min on 2 cores, timings included: run it on an idle machine)
 #   bash report/build.sh --check     compile to a temporary PDF only, to check the source (CI)
 #
 # Needs python3 with venv and pip; --figures also needs cargo. Runs from any directory.
+# Every build warns when a copy in report/data/ differs from its source, and when the figures
+# or the copied results were made at a commit older than the last one that touched src/ or
+# examples/ (the code they depict).
+#
+# report/data/ holds, from outside report/ (copied by --data and --figures):
+#   scale.csv, scale.md          python3 bench/scale.py (this crate against Embree 3)
+#   comparison.csv, comparison.md, furnace.csv, fresnel_probe.csv
+#                                bash validate/run.sh (the Mitsuba 3 cross-check)
+# and, made by --figures:
+#   modules.csv, loc.csv         python3 report/tools/modules.py (module graph, line counts)
+#   speed.csv, speed_memory.csv  python3 report/tools/speed.py (interleaved timings)
+#   dispatch.csv                 cargo bench --bench render -- dispatch (criterion, enum vs dyn)
+#   tests.csv                    cargo test -- --list (tests per test target)
+#   tiles.csv                    the dragon in four tiles, merged, compared with the whole
 #
 # --figures regenerates, into report/figures/:
 #   renders/<example>.png, renders.txt, renders.csv
@@ -14,15 +30,20 @@
 #       the textbook methods' failures beside the library's renders (report/failures);
 #   precision.csv, precision_time_vs_error.svg, convergence.csv, convergence.svg, precision.txt
 #       the accuracy study (cargo run --release --example precision);
+#   nee_efficiency.csv, nee_efficiency.svg
+#       emitters sampled or not (cargo run --release --example nee_efficiency);
+#   renders/cornell_box.png, renders/dragon.png, cli/*.txt
+#       scene files rendered and checked by the raytrace binary (the dragon only if
+#       tools/fetch_meshes.sh has fetched it; otherwise the committed figure stays);
 #   build-info.csv
 #       the machine, compiler, build flags and commit the figures were made with.
-# (figures/dispatch.csv holds criterion results recorded by hand: see the report, §4.2.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 TYPST_VERSION=0.15.2
 VENV=report/.venv
 FIG=report/figures
+DATA=report/data
 
 # The examples and the widths the report shows them at (heights follow each scene's aspect;
 # every other option is the example's default).
@@ -35,13 +56,15 @@ EXAMPLES=(
     "random_spheres 400"
 )
 
-usage() { sed -n '2,8s/^# \{0,1\}//p' "$0"; }
+usage() { sed -n '2,13s/^# \{0,1\}//p' "$0"; }
 
 figures=false
+data=false
 check=false
 for arg in "$@"; do
     case "$arg" in
-        --figures) figures=true ;;
+        --figures) figures=true; data=true ;;
+        --data) data=true ;;
         --check) check=true ;;
         -h | --help) usage; exit 0 ;;
         *) echo "build.sh: unknown option $arg" >&2; usage >&2; exit 2 ;;
@@ -107,6 +130,84 @@ PY
     echo "== the accuracy study (examples/precision)"
     "target/release/examples/precision" --out "$FIG" | tee "$FIG/precision.txt"
 
+    echo "== emitters sampled or not (examples/nee_efficiency)"
+    "target/release/examples/nee_efficiency" --out "$FIG" | tee "$FIG/nee_efficiency.txt"
+
+    echo "== scene files through the raytrace binary"
+    cargo build --release --bin raytrace --quiet
+    mkdir -p "$FIG/cli"
+    local rt=target/release/raytrace
+    "$rt" check scenes/cornell_box.toml >"$FIG/cli/cornell_box-check.txt"
+    "$rt" render scenes/cornell_box.toml --quiet --out "$tmp/cornell_box.png" | sed "s|$tmp/|report/figures/renders/|" \
+        | tee "$FIG/cli/cornell_box-render.txt"
+    cp "$tmp/cornell_box.png" "$FIG/renders/cornell_box.png"
+    if [ -f assets/meshes/dragon_vrip_res2.ply ]; then
+        local dragon=(scenes/dragon.toml --width 600 --spp 32 --quiet)
+        "$rt" check scenes/dragon.toml >"$FIG/cli/dragon-check.txt"
+        "$rt" render "${dragon[@]}" --out "$tmp/dragon.png" | sed "s|$tmp/|report/figures/renders/|" \
+            | tee "$FIG/cli/dragon-render.txt"
+        # The same render as four tiles in four processes, merged: the same bytes?
+        echo "tile,command,output" >"$DATA/tiles.csv"
+        for k in 1 2 3 4; do
+            out=$("$rt" render "${dragon[@]}" --tile "$k/4" --out "$tmp/dragon-$k.rtile")
+            echo "$k,\"raytrace render ${dragon[*]} --tile $k/4 --out dragon-$k.rtile\",\"${out//$tmp\//}\"" >>"$DATA/tiles.csv"
+        done
+        "$rt" merge "$tmp"/dragon-[1-4].rtile --out "$tmp/merged.png" >/dev/null
+        if cmp -s "$tmp/merged.png" "$tmp/dragon.png"; then same=identical; else same=different; fi
+        echo "merged,\"raytrace merge dragon-1.rtile … dragon-4.rtile --out merged.png; cmp merged.png dragon.png\",$same" >>"$DATA/tiles.csv"
+        cp "$tmp/dragon.png" "$FIG/renders/dragon.png"
+    else
+        echo "   (no assets/meshes/dragon_vrip_res2.ply: bash tools/fetch_meshes.sh; the committed dragon stays)"
+    fi
+
+    echo "== timings (report/tools/speed.py: interleaved runs of the examples)"
+    "$VENV/bin/python" report/tools/speed.py --out "$DATA/speed.csv"
+
+    echo "== enum against trait objects (criterion: cargo bench --bench render -- dispatch)"
+    cargo bench --quiet --bench render -- dispatch --warm-up-time 1 --measurement-time 3 >/dev/null
+    "$VENV/bin/python" - "$DATA/dispatch.csv" <<'PY'
+import csv, glob, json, os, sys
+rows = []
+for b in sorted(glob.glob("target/criterion/dispatch/*/*/new/benchmark.json")):
+    meta = json.load(open(b))
+    est = json.load(open(os.path.join(os.path.dirname(b), "estimates.json")))
+    scalar, path = meta["function_id"].split("/")
+    rows.append({"scalar": scalar, "path": path, "scene": meta["value_str"],
+                 "mean_ms": f"{est['mean']['point_estimate'] / 1e6:.3f}",
+                 "ci_low_ms": f"{est['mean']['confidence_interval']['lower_bound'] / 1e6:.3f}",
+                 "ci_high_ms": f"{est['mean']['confidence_interval']['upper_bound'] / 1e6:.3f}"})
+if len(rows) != 8:
+    sys.exit(f"dispatch.csv: expected 8 criterion results, found {len(rows)}")
+with open(sys.argv[1], "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=list(rows[0]))
+    w.writeheader()
+    w.writerows(rows)
+print(f"wrote {sys.argv[1]}")
+PY
+
+    echo "== the tests, counted (cargo test -- --list)"
+    cargo test --quiet -- --list 2>&1 | "$VENV/bin/python" - "$DATA/tests.csv" <<'PY'
+import csv, re, sys
+target, counts = None, {}
+for line in sys.stdin:
+    m = re.match(r"\s*Running (?:unittests )?(\S+)", line)
+    if m:
+        target = m.group(1)
+        continue
+    m = re.match(r"\s*Doc-tests (\S+)", line)
+    if m:
+        target = "doc-tests"
+        continue
+    if target and line.rstrip().endswith(": test"):
+        counts[target] = counts.get(target, 0) + 1
+with open(sys.argv[1], "w", newline="") as f:
+    w = csv.writer(f)
+    w.writerow(["target", "tests"])
+    for t, n in sorted(counts.items()):
+        w.writerow([t, n])
+print(f"wrote {sys.argv[1]}: {sum(counts.values())} tests in {len(counts)} targets")
+PY
+
     {
         echo "key,value"
         echo "cpu,\"$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //' || echo unknown)\""
@@ -119,11 +220,80 @@ PY
     } >"$FIG/build-info.csv"
 }
 
+# The data made outside report/ that the report reads, as "source copy" pairs.
+COPIES=(
+    "bench/results/scale.csv $DATA/scale.csv"
+    "bench/results/scale.md $DATA/scale.md"
+    "validate/results/comparison.csv $DATA/comparison.csv"
+    "validate/results/comparison.md $DATA/comparison.md"
+    "validate/results/furnace.csv $DATA/furnace.csv"
+    "validate/results/fresnel_probe.csv $DATA/fresnel_probe.csv"
+)
+
+copy_data() {
+    mkdir -p "$DATA"
+    for pair in "${COPIES[@]}"; do
+        read -r src dst <<<"$pair"
+        if [ -f "$src" ]; then cp "$src" "$dst"; else echo "warning: $src is missing; $dst kept" >&2; fi
+    done
+    python3 report/tools/modules.py "$DATA"
+}
+
+# Warnings only: the PDF is still built from what is committed.
+check_data() {
+    for pair in "${COPIES[@]}"; do
+        read -r src dst <<<"$pair"
+        if [ -f "$src" ] && ! cmp -s "$src" "$dst"; then
+            echo "warning: $dst differs from $src: bash report/build.sh --data takes the new one" >&2
+        fi
+    done
+    local tmp
+    tmp=$(mktemp -d)
+    python3 report/tools/modules.py "$tmp" >/dev/null
+    for f in modules.csv loc.csv; do
+        cmp -s "$tmp/$f" "$DATA/$f" ||
+            echo "warning: $DATA/$f no longer matches src/: bash report/build.sh --data remakes it" >&2
+    done
+    rm -rf "$tmp"
+    # Is the commit a result was made at older than the last change to the code it depicts?
+    git rev-parse --git-dir >/dev/null 2>&1 || return 0
+    local code
+    code=$(git log -1 --format=%h -- src examples 2>/dev/null || true)
+    [ -n "$code" ] || return 0
+    stale() { # $1 what, $2 its commit, $3 the command that remakes it
+        if [ -z "$2" ]; then
+            echo "warning: $1 names no commit" >&2
+        elif ! git cat-file -e "$2^{commit}" 2>/dev/null; then
+            echo "warning: $1 was made at $2, a commit this clone does not have" >&2
+        elif ! git merge-base --is-ancestor "$code" "$2" 2>/dev/null; then
+            echo "warning: $1 was made at $2, before $code, the last commit that changed src/ or examples/: $3" >&2
+        fi
+    }
+    stale "report/figures (build-info.csv)" \
+        "$(sed -n 's/^commit,\([0-9a-f]*\).*/\1/p' "$FIG/build-info.csv")" "bash report/build.sh --figures"
+    grep -q "with uncommitted changes" "$FIG/build-info.csv" &&
+        echo "warning: report/figures were made from uncommitted code" >&2
+    stale "$DATA/scale.csv (scale.md)" \
+        "$(grep -o 'commit `[0-9a-f]*`' "$DATA/scale.md" | head -1 | tr -d '`' | cut -d' ' -f2)" \
+        "python3 bench/scale.py, then bash report/build.sh --data"
+    stale "$DATA/comparison.csv (comparison.md)" \
+        "$(grep -o 'Commit `[0-9a-f]*`' "$DATA/comparison.md" | head -1 | tr -d '`' | cut -d' ' -f2)" \
+        "bash validate/run.sh, then bash report/build.sh --data"
+    return 0
+}
+
+if $data; then
+    echo "== copying the data made outside report/ into $DATA"
+    copy_data
+fi
+
 if $figures; then
     start=$SECONDS
     regenerate_figures
     echo "== figures regenerated in $((SECONDS - start)) s"
 fi
+
+check_data
 
 if $check; then
     out=$(mktemp -d)/report.pdf
