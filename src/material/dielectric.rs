@@ -115,7 +115,9 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for Dielectric<F> {
     /// Always scatters (reflects or refracts). Draws exactly one uniform number per call,
     /// even under total internal reflection, so the random stream does not depend on a
     /// decision that f32 and f64 can take differently near the critical angle.
-    #[inline]
+    // Always inlined: called out of line, it takes the hit by reference, and the batched
+    // renderer then writes every ray's hit to memory, glass or not (+3 % instructions).
+    #[inline(always)]
     fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
         let (d, n) = (ray.direction, hit.normal);
         let eta = self.eta(hit.front_face);
