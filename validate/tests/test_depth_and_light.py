@@ -38,10 +38,13 @@ def _l(v) -> list:
     return [float(x) for x in v]
 
 
-def _chain_scene(scene_from, n: int):
+def _chain_scene(scene_from, n: int, extra=(), background=1, materials=""):
+    """The mirrors of `_chain(n)` (and `extra` (triangle, material) pairs) seen along -z
+    through a narrow look-at camera, over a solid background of grey `background`."""
     objs = "".join(
         f'[[objects]]\ntype = "triangle"\na = {_l(a)}\nb = {_l(b)}\nc = {_l(c)}\n'
-        f'material = "mirror"\n' for a, b, c in _chain(n))
+        f'material = "{m}"\n'
+        for (a, b, c), m in [*((t, "mirror") for t in _chain(n)), *extra])
     return scene_from(f"""
 [camera]
 type = "look_at"
@@ -51,10 +54,11 @@ vfov = 0.01
 aspect = 2
 [background]
 type = "solid"
-color = [1, 1, 1]
+color = [{background}, {background}, {background}]
 [materials.mirror]
 type = "mirror"
 albedo = [{ALBEDO}, {ALBEDO}, {ALBEDO}]
+{materials}
 {objs}""", name=f"chain{n}")
 
 
@@ -101,28 +105,11 @@ def test_an_emitter_after_n_bounces_needs_depth_n_plus_1_in_both(n, scene_from, 
     t1 /= np.linalg.norm(t1)
     t2 = np.cross(t1, up)  # (t1, t2) counter-clockwise seen from below: faces -up
     c = [centre + 0.4 * (a * t1 + b * t2) for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-    objs = "".join(
-        f'[[objects]]\ntype = "triangle"\na = {_l(a)}\nb = {_l(b)}\nc = {_l(c)}\n'
-        f'material = "{m}"\n'
-        for (a, b, c), m in [*((t, "mirror") for t in tris),
-                             ((c[0], c[1], c[2]), "lamp"), ((c[0], c[2], c[3]), "lamp")])
-    scene = scene_from(f"""
-[camera]
-type = "look_at"
-from = [0, 0, 0]
-at = [0, 0, -1]
-vfov = 0.01
-aspect = 2
-[background]
-type = "solid"
-color = [0, 0, 0]
-[materials.mirror]
-type = "mirror"
-albedo = [{ALBEDO}, {ALBEDO}, {ALBEDO}]
+    lamp = [((c[0], c[1], c[2]), "lamp"), ((c[0], c[2], c[3]), "lamp")]
+    scene = _chain_scene(scene_from, n, extra=lamp, background=0, materials="""
 [materials.lamp]
 type = "emissive"
-radiance = [2, 3, 4]
-{objs}""", name=f"lamp{n}")
+radiance = [2, 3, 4]""")
     want = ALBEDO ** n * np.array([2.0, 3.0, 4.0])
     assert convert.surface_emitters(scene) and convert.scene_depth(scene, 5) == 5
 
