@@ -22,6 +22,8 @@
 #   dispatch.csv                 cargo bench --bench render -- dispatch (criterion, enum vs dyn)
 #   tests.csv                    cargo test -- --list (tests per test target)
 #   tiles.csv                    the dragon in four tiles, merged, compared with the whole
+# and one file kept by hand, recorded.csv: the one measurement of the book's C++ (not in this
+# repository), copied from docs/PERFORMANCE.md with the commit it was made beside.
 #
 # --figures regenerates, into report/figures/:
 #   renders/<example>.png, renders.txt, renders.csv
@@ -32,8 +34,8 @@
 #       the accuracy study (cargo run --release --example precision);
 #   nee_efficiency.csv, nee_efficiency.svg
 #       emitters sampled or not (cargo run --release --example nee_efficiency);
-#   renders/cornell_box.png, renders/dragon.png, cli/*.txt
-#       scene files rendered and checked by the raytrace binary (the dragon only if
+#   renders/cornell_box.png, renders/dragon.png, cli/*.txt, ../data/tiles.csv
+#       scene files rendered and checked by the raytrace binary (the dragon and its tiles only if
 #       tools/fetch_meshes.sh has fetched it; otherwise the committed figure stays);
 #   build-info.csv
 #       the machine, compiler, build flags and commit the figures were made with.
@@ -138,6 +140,7 @@ PY
     mkdir -p "$FIG/cli"
     local rt=target/release/raytrace
     "$rt" check scenes/cornell_box.toml >"$FIG/cli/cornell_box-check.txt"
+    "$rt" check scenes/random_spheres.toml >"$FIG/cli/random_spheres-check.txt"
     "$rt" render scenes/cornell_box.toml --quiet --out "$tmp/cornell_box.png" | sed "s|$tmp/|report/figures/renders/|" \
         | tee "$FIG/cli/cornell_box-render.txt"
     cp "$tmp/cornell_box.png" "$FIG/renders/cornell_box.png"
@@ -186,7 +189,7 @@ print(f"wrote {sys.argv[1]}")
 PY
 
     echo "== the tests, counted (cargo test -- --list)"
-    cargo test --quiet -- --list 2>&1 | "$VENV/bin/python" - "$DATA/tests.csv" <<'PY'
+    cargo test -- --list 2>&1 | "$VENV/bin/python" - "$DATA/tests.csv" <<'PY'
 import csv, re, sys
 target, counts = None, {}
 for line in sys.stdin:
