@@ -189,10 +189,12 @@ print(f"wrote {sys.argv[1]}")
 PY
 
     echo "== the tests, counted (cargo test -- --list)"
-    cargo test -- --list 2>&1 | "$VENV/bin/python" - "$DATA/tests.csv" <<'PY'
+    # (The list goes through a file: `python -` reads its script from stdin.)
+    cargo test -- --list >"$tmp/tests.txt" 2>&1
+    "$VENV/bin/python" - "$tmp/tests.txt" "$DATA/tests.csv" <<'PY'
 import csv, re, sys
 target, counts = None, {}
-for line in sys.stdin:
+for line in open(sys.argv[1], encoding="utf-8"):
     m = re.match(r"\s*Running (?:unittests )?(\S+)", line)
     if m:
         target = m.group(1)
@@ -203,12 +205,14 @@ for line in sys.stdin:
         continue
     if target and line.rstrip().endswith(": test"):
         counts[target] = counts.get(target, 0) + 1
-with open(sys.argv[1], "w", newline="") as f:
+if not counts:
+    sys.exit("tests.csv: no test listed (see " + sys.argv[1] + ")")
+with open(sys.argv[2], "w", newline="") as f:
     w = csv.writer(f)
     w.writerow(["target", "tests"])
     for t, n in sorted(counts.items()):
         w.writerow([t, n])
-print(f"wrote {sys.argv[1]}: {sum(counts.values())} tests in {len(counts)} targets")
+print(f"wrote {sys.argv[2]}: {sum(counts.values())} tests in {len(counts)} targets")
 PY
 
     {
