@@ -66,7 +66,7 @@ struct Span<F> {
     centroids: Aabb<F>,
 }
 
-/// The span of `items` (only where a node's span was not handed down: the root, median
+/// The span of `items` (only where a node's span was not handed down: the root, middle-centroid
 /// splits).
 fn fold<F: Float>(items: &[Item<F>]) -> Span<F> {
     items.iter().fold(Span::empty(), |s, it| s.add(it))

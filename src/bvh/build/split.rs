@@ -1,4 +1,4 @@
-//! Where a node of the build splits: the binned SAH sweep, the median below a depth, and
+//! Where a node of the build splits: the binned SAH sweep, the middle centroid below a depth, and
 //! the split by class that keeps leaves of one class.
 
 use super::super::{MAX_LEAF, TRAVERSAL_COST};
@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 /// Centroid bins per axis for the SAH sweep.
 const BINS: usize = 16;
-/// Depth from which nodes split at the median instead of by SAH, so the tree's depth,
+/// Depth from which nodes split at the middle centroid instead of by SAH, so the tree's depth,
 /// and the traversal stack, stay below `MEDIAN_DEPTH + 32` whatever the input.
 const MEDIAN_DEPTH: usize = 40;
 /// Primitives from which a node bins in chunks of `CHUNK`, the chunks as separate tasks.
@@ -219,7 +219,8 @@ fn sweep<F: Float>(axis: usize, bins: &[Bin<F>; BINS], area: f64, best: &mut Opt
     }
 }
 
-/// Splits at the median centroid along the longest axis (a leaf for `MAX_LEAF` or fewer).
+/// Splits at the middle centroid (half the items on each side) along the longest axis (a
+/// leaf for `MAX_LEAF` or fewer).
 fn median_split<F: Float>(items: &mut [Item<F>]) -> Option<(usize, Span<F>, Span<F>)> {
     if items.len() <= MAX_LEAF {
         return None;
