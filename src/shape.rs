@@ -182,7 +182,7 @@ impl<F: Float> Intersection<F> {
 /// either side of the true surface about as often, and from the wrong side the new ray
 /// hits the surface it is leaving, at a tiny `t`. The image shows it as dark speckles
 /// ("shadow acne"), worse the farther the shape is from the world origin for its size,
-/// where the rounding is coarser (`tests/custom_shape.rs` counts them).
+/// where the rounding is coarser (`tests/it/custom_shape.rs` counts them).
 pub trait Hittable<F: Float> {
     /// The nearest intersection with `t` in the open interval `(0, t_max)`, if any.
     ///

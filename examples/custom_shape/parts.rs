@@ -1,6 +1,6 @@
 //! The user's side of `custom_shape`: a shape ([`Disk`]) and a material ([`Checker`]) the
 //! library does not have, the two enums that put them beside the library's on the enum
-//! path, and the scene built on both dispatch paths. `tests/custom_shape.rs` includes this
+//! path, and the scene built on both dispatch paths. `tests/it/custom_shape.rs` includes this
 //! file too.
 
 use raytrace::aabb::Aabb;

@@ -1,0 +1,48 @@
+//! The integration tests, in one crate: one build and one link instead of one per topic
+//! (a test crate per file compiled the generic renderer over again each time, and took
+//! most of `cargo test`'s eleven minutes). A module per topic; `cargo test topic::` runs one.
+
+// Shared helpers, and the examples' own code that the tests check.
+mod common;
+#[path = "../../examples/common/files.rs"]
+mod files;
+mod mesh_scene;
+#[path = "../../examples/common/options.rs"]
+mod options;
+#[path = "../../examples/custom_shape/parts.rs"]
+mod parts;
+#[path = "../../examples/scenes/mod.rs"]
+mod scenes;
+
+mod advice;
+mod bad_input;
+mod bvh_scene;
+mod cli;
+mod custom_shape;
+mod degenerate_scatter;
+mod emission;
+mod emission_analytic;
+mod emitter_chi2;
+mod example_files;
+mod example_options;
+mod flat_shapes;
+mod glass;
+mod interrupt;
+mod intersections;
+mod lambertian_chi2;
+mod lights;
+mod meshes;
+mod mis_unbiased;
+mod random_scenes;
+mod reference;
+mod reflection;
+mod refraction;
+mod render_core;
+mod scene_file_errors;
+mod scene_files;
+mod self_intersection;
+mod sphere_stability;
+mod tiles;
+mod triangle_light_chi2;
+mod value_stability;
+mod watertight;

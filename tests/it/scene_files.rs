@@ -1,0 +1,309 @@
+//! Scene files: each example's file builds the example's scene (the same image bits as
+//! the code, in f32 and f64), no input makes the parser panic, and what it accepts reads
+//! back from its TOML. Where mistakes are reported: tests/scene_file_errors.rs.
+
+use crate::common;
+use crate::scenes;
+
+use proptest::prelude::*;
+use raytrace::prelude::*;
+use raytrace::scene_file::{
+    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
+    RenderOptions, Scale, SceneFile,
+};
+use raytrace::{Acceleration, Image};
+use std::path::{Path, PathBuf};
+
+const WIDTH: usize = 48;
+const SPP: u32 = 2;
+
+fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(format!("{name}.toml"))
+}
+
+/// The example's file rendered small, in `F`.
+fn from_file<F: Float>(name: &str) -> (Image, RenderOptions) {
+    let mut file = SceneFile::load(&scene_path(name)).unwrap();
+    let defaults = file.render().clone();
+    file.render_mut().width = WIDTH;
+    file.render_mut().spp = SPP;
+    let built = file.build::<F>().unwrap();
+    (
+        render(&built.scene, &built.camera, &built.settings)
+            .unwrap()
+            .image,
+        defaults,
+    )
+}
+
+/// The code-built scene rendered the same way, in `F`.
+fn from_code<F: Float>(name: &str, max_depth: u32) -> Image {
+    let settings = RenderSettings::new(SPP, max_depth, 0).unwrap();
+    let spec = |scene: raytrace::Result<EnumScene<F>>| {
+        render(
+            &scene.unwrap(),
+            &ScreenCamera::with_width(WIDTH).unwrap(),
+            &settings,
+        )
+    };
+    let rendered = match name {
+        "four_mirrors" => spec(scenes::four_mirrors()),
+        "matte_spheres" => spec(scenes::matte_spheres()),
+        "glass" => spec(scenes::glass()),
+        "plane_and_triangles" => spec(scenes::plane_and_triangles()),
+        "point_lights" => spec(scenes::point_lights()),
+        "random_spheres" => render(
+            &scenes::random_spheres::<F>(0).unwrap(),
+            &scenes::random_spheres_camera::<F>(WIDTH).unwrap(),
+            &settings,
+        ),
+        _ => unreachable!("{name}"),
+    };
+    rendered.unwrap().image
+}
+
+/// Each example's name and its defaults (examples/*.rs): width, spp, max depth.
+const EXAMPLES: [(&str, usize, u32, u32); 6] = [
+    ("four_mirrors", 800, 1, 10),
+    ("matte_spheres", 800, 16, 10),
+    ("glass", 800, 32, 20),
+    ("plane_and_triangles", 800, 32, 20),
+    ("point_lights", 800, 16, 10),
+    ("random_spheres", 400, 10, 50),
+];
+
+fn same_image_as_code<F: Float>() {
+    for (name, width, spp, max_depth) in EXAMPLES {
+        let (file, defaults) = from_file::<F>(name);
+        assert_eq!(
+            (defaults.width, defaults.spp, defaults.max_depth, defaults.seed),
+            (width, spp, max_depth, 0),
+            "{name}: the file's [render] is the example's defaults"
+        );
+        assert_eq!(file, from_code::<F>(name, max_depth), "{name} in {}", F::NAME);
+    }
+}
+
+#[test]
+fn every_example_file_renders_the_code_built_image_in_f64() {
+    same_image_as_code::<f64>();
+}
+
+#[test]
+fn every_example_file_renders_the_code_built_image_in_f32() {
+    same_image_as_code::<f32>();
+}
+
+#[test]
+fn summaries_count_what_the_files_hold() {
+    let built = SceneFile::load(&scene_path("plane_and_triangles"))
+        .unwrap()
+        .build::<f64>()
+        .unwrap();
+    let s = built.summary;
+    assert_eq!(
+        (s.spheres, s.planes, s.triangles, s.meshes, s.lights),
+        (2, 1, 8, 0, 0)
+    );
+    let b = s.bounds.unwrap();
+    // Shapes pad their boxes by a few units of rounding.
+    assert!((b.min.y + 0.8).abs() < 1e-12, "{b:?}");
+    assert!(
+        (b.max.x - 4.5).abs() < 1e-12,
+        "the sphere at x = 3.5 of radius 1: {b:?}"
+    );
+    assert!(!s.uses_bvh);
+    let many = SceneFile::load(&scene_path("random_spheres"))
+        .unwrap()
+        .build::<f32>()
+        .unwrap();
+    assert!(many.summary.uses_bvh && many.summary.spheres > 400);
+}
+
+const GOOD: &str = include_str!("../../scenes/four_mirrors.toml");
+
+fn triple(range: std::ops::Range<f64>) -> impl Strategy<Value = [f64; 3]> {
+    [range.clone(), range.clone(), range]
+}
+
+/// Any finite `f64`, tiny and huge ones included.
+fn finite() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        -1e3..1e3f64,
+        any::<f64>().prop_filter("finite", |x| x.is_finite())
+    ]
+}
+
+fn any_file() -> impl Strategy<Value = SceneFile> {
+    let render = (1..5000usize, 1..100u32, 0..1000u32, any::<u64>(), 0..3u8, 0..3u8).prop_map(
+        |(width, spp, max_depth, seed, p, a)| RenderOptions {
+            width,
+            spp,
+            max_depth,
+            seed,
+            precision: [FilePrecision::F32, FilePrecision::F64, FilePrecision::Auto][p as usize],
+            acceleration: [Acceleration::Auto, Acceleration::Linear, Acceleration::Bvh][a as usize],
+        },
+    );
+    let camera = prop_oneof![
+        proptest::option::of([finite(), finite(), finite()]).prop_map(|eye| CameraSpec::Screen { eye }),
+        (
+            [finite(), finite(), finite()],
+            triple(-5.0..5.0),
+            triple(-1.0..1.0),
+            1.0..179.0f64,
+            0.1..10.0f64
+        )
+            .prop_map(|(from, at, up, vfov, aspect)| CameraSpec::LookAt {
+                from,
+                at,
+                up,
+                vfov,
+                aspect
+            }),
+    ];
+    let background = prop_oneof![
+        (triple(0.0..2.0), triple(0.0..2.0))
+            .prop_map(|(horizon, zenith)| BackgroundSpec::Sky { horizon, zenith }),
+        triple(0.0..1.0).prop_map(|color| BackgroundSpec::Solid { color }),
+    ];
+    let material = prop_oneof![
+        triple(0.0..1.0).prop_map(|albedo| MaterialSpec::Mirror { albedo }),
+        triple(0.0..1.0).prop_map(|albedo| MaterialSpec::Lambertian { albedo }),
+        (finite(), proptest::option::of(triple(0.0..1.0)), any::<bool>()).prop_map(
+            |(index, albedo, exact)| {
+                MaterialSpec::Dielectric {
+                    index,
+                    albedo,
+                    fresnel: if exact {
+                        FresnelSpec::Exact
+                    } else {
+                        FresnelSpec::Schlick
+                    },
+                }
+            }
+        ),
+    ];
+    let name = "\\PC{1,10}";
+    let object = prop_oneof![
+        ([finite(), finite(), finite()], finite(), name).prop_map(|(center, radius, material)| {
+            ObjectSpec::Sphere {
+                center,
+                radius,
+                material,
+            }
+        }),
+        (triple(-9.0..9.0), triple(-1.0..1.0), name).prop_map(|(point, normal, material)| {
+            ObjectSpec::Plane {
+                point,
+                normal,
+                material,
+            }
+        }),
+        (triple(-9.0..9.0), triple(-9.0..9.0), triple(-9.0..9.0), name)
+            .prop_map(|(a, b, c, material)| ObjectSpec::Triangle { a, b, c, material }),
+        (
+            name,
+            prop_oneof![
+                finite().prop_map(Scale::Uniform),
+                triple(-3.0..3.0).prop_map(Scale::PerAxis)
+            ],
+            triple(-360.0..360.0),
+            triple(-9.0..9.0),
+            name
+        )
+            .prop_map(|(file, scale, rotate, translate, material)| ObjectSpec::Mesh {
+                file,
+                scale,
+                rotate,
+                translate,
+                material
+            }),
+    ];
+    let light = (triple(-9.0..9.0), triple(0.0..50.0))
+        .prop_map(|(position, intensity)| LightSpec { position, intensity });
+    (
+        render,
+        camera,
+        background,
+        proptest::collection::btree_map(name, material, 0..4),
+        proptest::collection::vec(object, 0..5),
+        proptest::collection::vec(light, 0..3),
+    )
+        .prop_map(|(render, camera, background, materials, objects, lights)| {
+            let mut file = SceneFile::parse("", Path::new("p.toml")).unwrap();
+            *file.render_mut() = render;
+            file.camera = camera;
+            file.background = background;
+            file.materials = materials;
+            file.objects = objects;
+            file.lights = lights;
+            file
+        })
+}
+
+proptest! {
+    #![proptest_config(common::config(256, 0x5CE4_E000, "proptest-regressions/scene_files.txt"))]
+
+    #[test]
+    fn any_text_is_parsed_or_refused_without_panicking(text in "\\PC{0,200}") {
+        let _ = SceneFile::parse(&text, Path::new("p.toml")).map(|f| f.build::<f32>().map(|b| b.summary));
+    }
+
+    #[test]
+    fn any_edit_of_a_real_file_is_refused_without_panicking_or_read_back_from_its_toml(
+        at in 0..GOOD.len(), cut in 0..20usize, insert in "[\\[\\]=\"a-z0-9.,\\n -]{0,12}",
+    ) {
+        let mut text = GOOD.as_bytes()[..at].to_vec();
+        text.extend_from_slice(insert.as_bytes());
+        text.extend_from_slice(&GOOD.as_bytes()[(at + cut).min(GOOD.len())..]);
+        let text = String::from_utf8_lossy(&text);
+        if let Ok(file) = SceneFile::parse(&text, Path::new("p.toml")) {
+            let _ = file.build::<f64>().map(|b| b.summary);
+            // What is accepted reads back from its TOML (compared in Debug form, where a
+            // NaN the edit made, `nan`, equals itself and -0 differs from 0).
+            let toml = file.to_toml();
+            let back = SceneFile::parse(&toml, Path::new("p.toml"));
+            prop_assert!(back.is_ok(), "{:?} from {}", back, toml);
+            prop_assert_eq!(format!("{:?}", back.unwrap()), format!("{file:?}"), "{}", toml);
+        }
+    }
+
+    #[test]
+    fn every_file_reads_back_from_its_toml(file in any_file()) {
+        let text = file.to_toml();
+        prop_assert_eq!(SceneFile::parse(&text, Path::new("p.toml")).unwrap(), file, "{}", text);
+    }
+}
+
+#[test]
+fn the_format_documents_example_parses() {
+    let doc = include_str!("../../docs/SCENE_FORMAT.md");
+    let (_, rest) = doc.split_once("```toml\n").unwrap();
+    let (example, _) = rest.split_once("```").unwrap();
+    let file = SceneFile::parse(example, Path::new("docs/example.toml")).unwrap();
+    assert_eq!(
+        (file.objects.len(), file.materials.len(), file.lights.len()),
+        (4, 3, 1)
+    );
+    // It builds with a mesh in place of the bunny (fetched, not committed): the committed
+    // tetrahedron, beside a file in tests/data/.
+    let example = example.replace("meshes/bunny.obj", "meshes/tetrahedron.obj");
+    let file = SceneFile::parse(&example, Path::new("tests/data/example.toml")).unwrap();
+    let summary = file.build::<f32>().unwrap().summary;
+    assert_eq!(
+        (summary.spheres, summary.planes, summary.meshes, summary.triangles),
+        (2, 1, 1, 4)
+    );
+}
+
+#[test]
+fn auto_precision_is_advised_on_the_files_scene() {
+    let mut file = SceneFile::load(&scene_path("four_mirrors")).unwrap();
+    file.render_mut().width = 16;
+    let advice = raytrace::scene_file::advise_precision(&file).unwrap();
+    // The spec's scene near the origin is within one 8-bit step in f64 at least.
+    assert!(advice.f64.error.within_one_step(), "{advice:?}");
+}
