@@ -1,5 +1,5 @@
 //! Micro-benchmarks: vector operations, ray–sphere (textbook vs stable, one sphere vs four
-//! at once, f32 vs f64), ray–triangle, each material's scatter, and the spec's rejection
+//! at once, f32 vs f64), ray–triangle, each material's sample, and the spec's rejection
 //! sampler against its alternatives.
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
@@ -7,8 +7,8 @@ use rand::{RngExt, SeedableRng};
 use rand_distr::{Distribution, UnitSphere};
 use raytrace::prelude::*;
 use raytrace::sampling::{cosine_direction, lambertian_direction, unit_sphere_rejection};
-use raytrace::shape::{Hit, Sphere4, textbook_sphere_hit};
-use raytrace::{DefaultRng, Material};
+use raytrace::shape::{Hit, Sphere4, Surface, hit, textbook_sphere_hit};
+use raytrace::{DefaultRng, Scatter};
 use std::hint::black_box;
 
 /// 1024 seeded rays from around the origin towards a unit sphere at distance 4.
@@ -44,7 +44,7 @@ fn sphere<F: Float>(c: &mut Criterion) {
     g.bench_function(BenchmarkId::new(F::NAME, "stable"), |b| {
         b.iter(|| {
             rays.iter()
-                .filter(|r| s.hit(black_box(r), F::infinity()).is_some())
+                .filter(|r| hit(&s, black_box(r), F::infinity()).is_some())
                 .count()
         })
     });
@@ -63,7 +63,7 @@ fn sphere<F: Float>(c: &mut Criterion) {
     g.bench_function(BenchmarkId::new(F::NAME, "4-spheres-one-by-one"), |b| {
         b.iter(|| {
             rays.iter()
-                .filter(|r| four.iter().any(|s| s.hit(black_box(r), F::infinity()).is_some()))
+                .filter(|r| four.iter().any(|s| hit(s, black_box(r), F::infinity()).is_some()))
                 .count()
         })
     });
@@ -85,7 +85,7 @@ fn triangle<F: Float>(c: &mut Criterion) {
     g.bench_function(BenchmarkId::new(F::NAME, "watertight"), |b| {
         b.iter(|| {
             rays.iter()
-                .filter(|r| t.hit(black_box(r), F::infinity()).is_some())
+                .filter(|r| hit(&t, black_box(r), F::infinity()).is_some())
                 .count()
         })
     });
@@ -96,7 +96,7 @@ fn scatter<F: Float>(c: &mut Criterion) {
     let mut g = c.benchmark_group("scatter");
     let ray = Ray::new(Vec3::zero(), Vec3::from_f64(0.0, -0.6, -0.8));
     let n = Vec3::from_f64(0.0, 1.0, 0.0);
-    let hit = Hit::new(lit(2.0), ray.at(lit(2.0)), Vec3::zero(), n, ray.direction);
+    let at = Hit::new(Surface::bare(lit(2.0), ray.at(lit(2.0)), n), ray.direction);
     let mut rng = DefaultRng::seed_from_u64(2);
     let materials: [(&str, MaterialKind<F>); 3] = [
         ("mirror", Mirror::new(Vec3::splat(lit(0.9))).unwrap().into()),
@@ -108,7 +108,7 @@ fn scatter<F: Float>(c: &mut Criterion) {
     ];
     for (name, m) in materials {
         g.bench_function(BenchmarkId::new(F::NAME, name), |b| {
-            b.iter(|| Material::<F, DefaultRng>::scatter(&m, black_box(&ray), &hit, &mut rng))
+            b.iter(|| Scatter::<F, DefaultRng>::sample(&m, &at, black_box(-ray.direction), &mut rng))
         });
     }
     g.finish();

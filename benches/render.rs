@@ -66,7 +66,7 @@ fn dispatch<F: Float>(c: &mut Criterion) {
     let s4 = RenderSettings::new(4, 10, 0).unwrap();
     let spec = ScreenCamera::new(160, 80).unwrap();
     let matte = scenes::matte_spheres::<F>().unwrap();
-    let matte_dyn: DynScene<F, DefaultRng> = matte.to_dyn();
+    let matte_dyn: DynScene<F> = matte.to_dyn();
     g.bench_function(
         BenchmarkId::new(format!("{}/enum", F::NAME), "matte_spheres-160x80-4spp"),
         |b| b.iter(|| single(|| render(&matte, &spec, &s4).unwrap().stats.rays)),
@@ -77,7 +77,7 @@ fn dispatch<F: Float>(c: &mut Criterion) {
     );
     let look = scenes::random_spheres_camera::<F>(160).unwrap();
     let random = scenes::random_spheres::<F>(0).unwrap();
-    let random_dyn: DynScene<F, DefaultRng> = random.to_dyn();
+    let random_dyn: DynScene<F> = random.to_dyn();
     let s2 = RenderSettings::new(2, 50, 0).unwrap();
     g.bench_function(
         BenchmarkId::new(format!("{}/enum", F::NAME), "random_spheres-160x90-2spp"),

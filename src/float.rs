@@ -41,7 +41,7 @@ pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + '
     /// sign: [`next_up`](Float::next_up) for `s > 0`, [`next_down`](Float::next_down) for
     /// `s < 0`, `self` for `s = 0` or NaN. A non-finite `self` is returned as it is.
     // The step helpers are trait methods, hidden, so f32 and f64 can replace them with
-    // their branch-free lanes; only `offset_ray_origin` needs them.
+    // their branch-free lanes; only `Hit::offset_origin` needs them.
     #[doc(hidden)]
     #[inline]
     fn step_toward(self, s: Self) -> Self {

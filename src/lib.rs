@@ -37,6 +37,7 @@ pub mod camera;
 pub mod double_double;
 pub mod error;
 pub mod float;
+pub mod frame;
 pub mod image;
 mod lanes;
 pub mod light;
@@ -61,7 +62,8 @@ pub use float::{Float, lit};
 pub use image::{Encoding, Image, Image16};
 pub use light::PointLight;
 pub use material::{
-    Dielectric, Emission, Emissive, Lambertian, Material, MaterialKind, Mirror, Scatter, SharedMaterial,
+    BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, MaterialKind, Mirror,
+    Scatter, SharedMaterial,
 };
 pub use ray::Ray;
 pub use render::{
@@ -69,7 +71,7 @@ pub use render::{
 };
 pub use sampling::DefaultRng;
 pub use scene::{Acceleration, DynScene, EnumScene, Layout, Object, Scene};
-pub use shape::{Hit, Hittable, Intersection, Mesh, Plane, ShapeKind, Sphere, Triangle};
+pub use shape::{Hit, Hittable, Intersection, Mesh, Plane, ShapeKind, Sphere, Surface, Triangle};
 pub use vec3::{Color, Vec3};
 
 /// The random generators' crate, re-exported so a user's generator and `Rng` bounds name
@@ -82,7 +84,7 @@ pub mod prelude {
     pub use crate::{
         Background, Camera, Color, Dielectric, DynScene, Emissive, Encoding, EnumScene, Error, Float,
         Hittable, Lambertian, Layout, LightSampling, LookAtCamera, Material, MaterialKind, Mesh, Mirror,
-        Plane, PointLight, Ray, Rect, RenderSettings, Renderer, Scene, ScreenCamera, ShapeKind, Sphere,
-        Triangle, Vec3, lit, render,
+        Plane, PointLight, Ray, Rect, RenderSettings, Renderer, Scatter, Scene, ScreenCamera, ShapeKind,
+        Sphere, Triangle, Vec3, lit, render,
     };
 }

@@ -1,200 +1,130 @@
-//! The spec's abstract material: the [`Material`] trait, the [`Scatter`] it returns,
-//! and [`MaterialKind`], the enum fast path over the concrete materials.
+//! The spec's abstract material as a BSDF: the [`Material`] and [`Scatter`] traits,
+//! what they answer ([`Lobes`], [`Eval`], [`BsdfSample`]), the concrete materials, and
+//! [`MaterialKind`], the enum fast path over them.
 
+mod bsdf;
 mod dielectric;
 mod emissive;
+mod kind;
 mod lambertian;
 mod mirror;
+mod shared;
 
+pub use bsdf::{BsdfSample, Eval, Lobes};
 pub use dielectric::{Dielectric, Reflectance};
 pub use emissive::{Emission, Emissive};
+pub use kind::MaterialKind;
 pub use lambertian::{CosineSampler, Lambertian};
 pub use mirror::Mirror;
+pub use shared::SharedMaterial;
 
 use crate::float::Float;
-use crate::ray::Ray;
 use crate::shape::Hit;
-use crate::vec3::{Color, Vec3};
+use crate::vec3::Vec3;
 use rand::Rng;
 use std::sync::Arc;
 
-/// What a hit does to a ray: absorbs part of its colour and sends it on.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Scatter<F> {
-    /// The albedo `A` applied to the continuing ray's colour: `C⁺ = A ∘ C⁻`.
-    pub attenuation: Color<F>,
-    /// The continuing ray's unit direction `D⁺`.
-    pub direction: Vec3<F>,
+/// How a surface reflects, transmits and gives off light: the specification's abstract
+/// material, as a BSDF at a hit.
+///
+/// The renderer asks a material only these questions and [`Scatter::sample`], never what
+/// kind it is: point lights and sampled emitters light every material with a
+/// [non-delta](Lobes::has_non_delta) lobe through [`eval`](Material::eval), and weigh
+/// that light against the direction `sample` could have drawn through
+/// [`pdf`](Material::pdf) (multiple importance sampling). Adding a material is a type
+/// that answers them, and an arm in [`MaterialKind`] (`docs/ADDING_A_MATERIAL.md`).
+///
+/// No method has a default, so an enum that wraps the library's materials must pass on
+/// every answer or it does not compile. No method here draws random numbers, so none
+/// carries the generator's type: that is [`Scatter`]'s.
+///
+/// # Directions and frames
+/// Every direction is a world-space unit vector pointing away from the surface: `wo`
+/// toward where the ray came from (`wo = −D`), `wi` toward the light or the next
+/// vertex. The [`Hit`] carries the shading normal, `∂p/∂u` and `uv`; a material that works
+/// in local coordinates builds [`Hit::shading_frame`] (`cos θ = w.z` there), while the
+/// specification's three materials keep its world-space formulas bit for bit.
+///
+/// # Shading normals
+/// The geometric normal decides which side of the surface a direction is on; the shading
+/// normal ([`Hit::shading_normal`], interpolated from a mesh's vertex normals or perturbed
+/// by a normal map) is the one the BSDF shades with. As pbrt-v4 does, the shading normal
+/// is turned to the geometric normal's side. Where the two still disagree about a
+/// direction ([`Hit::sides_agree`]), the renderer lets no light through: a light the
+/// geometry hides is not evaluated, a sampled direction that would cross the surface ends
+/// the path, and a surface seen from a direction its shading normal faces away from
+/// reflects nothing. So no light leaks through a closed surface, at the price of a little
+/// energy at grazing angles.
+pub trait Material<F: Float> {
+    /// Every lobe the material may scatter into.
+    fn lobes(&self) -> Lobes;
+
+    /// Whether the material reads the hit's surface coordinates ([`Hit::uv`],
+    /// [`Hit::dpdu`]): a texture, an anisotropic lobe, a normal map. Only then does the
+    /// scene compute them (a sphere's `atan2` and `acos`); otherwise they are zero.
+    fn reads_coordinates(&self) -> bool;
+
+    /// `f(wo, wi)·|cos θᵢ|` of the non-delta lobes at `hit`, `θᵢ` the angle between `wi`
+    /// and the shading normal; `None` when no light goes from `wi` to `wo` (`wi` below a
+    /// reflecting surface, a delta lobe only), so the renderer traces no shadow ray.
+    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>>;
+
+    /// The density per unit solid angle with which [`Scatter::sample`] draws `wi` for
+    /// `wo` among its non-delta lobes (including the probability of choosing them); 0
+    /// for a direction it never draws.
+    fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F;
+
+    /// The light the surface gives off, if it is an emitter ([`Emissive`]): a ray that
+    /// hits it brings back `L_e` besides what it scatters.
+    fn emits(&self) -> Option<Emission<F>>;
 }
 
-/// How a surface changes a ray that hits it: the specification's abstract material.
-///
-/// Generic over the scalar `F` and the random generator `R`; `R` is a parameter of the
-/// trait (not of the method) so `dyn Material<F, R>` is a valid trait object.
-pub trait Material<F: Float, R: Rng + ?Sized> {
-    /// The scattered ray's direction and attenuation, or `None` if the ray is absorbed.
-    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>>;
-
-    /// For an ideal diffuse (Lambertian) surface, its albedo `A`: the renderer then adds
-    /// direct light from point lights and from sampled emitters with the BRDF `A/π`, and
-    /// weighs the light its scattered ray finds on an emitter as that of a direction drawn
-    /// with density `cos θ/π` (multiple importance sampling). `None` for other surfaces,
-    /// whose scattered rays count the light they find in full.
-    #[inline]
-    fn diffuse_albedo(&self) -> Option<Color<F>> {
-        None
-    }
-
-    /// The light this surface gives off, if any (an area light, [`Emissive`]): a ray that
-    /// hits it brings back `L_e` besides what it scatters. `None` (the default) for
-    /// surfaces that give off no light.
-    #[inline]
-    fn emission(&self) -> Option<Emission<F>> {
-        None
-    }
+/// How a material draws the direction a ray leaves in: the one part of a material that
+/// needs random numbers, so the one that carries the generator's type `R`. `R` is a
+/// parameter of the trait, not of the method, so `dyn Scatter<F, R>` is a valid trait
+/// object ([`SharedMaterial`] uses `R = dyn Rng`).
+pub trait Scatter<F: Float, R: Rng + ?Sized>: Material<F> {
+    /// A direction for the ray that arrived from `wo`, with its weight
+    /// `f·|cos θᵢ|/pdf`, its density and its lobe; `None` if the surface absorbs the
+    /// ray.
+    ///
+    /// It draws from `rng` as the method needs: a fixed count of uniform numbers for a
+    /// closed-form warp (the pure warps take the numbers, as pbrt's do, and are tested
+    /// without a generator), or as many as the specification's rejection method takes.
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>>;
 }
 
 macro_rules! forward_material {
     ($($ptr:ty),*) => {$(
-        impl<F: Float, R: Rng + ?Sized, T: Material<F, R> + ?Sized> Material<F, R> for $ptr {
+        impl<F: Float, T: Material<F> + ?Sized> Material<F> for $ptr {
             #[inline]
-            fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
-                (**self).scatter(ray, hit, rng)
+            fn lobes(&self) -> Lobes {
+                (**self).lobes()
             }
             #[inline]
-            fn diffuse_albedo(&self) -> Option<Color<F>> {
-                (**self).diffuse_albedo()
+            fn reads_coordinates(&self) -> bool {
+                (**self).reads_coordinates()
             }
             #[inline]
-            fn emission(&self) -> Option<Emission<F>> {
-                (**self).emission()
+            fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+                (**self).eval(hit, wo, wi)
+            }
+            #[inline]
+            fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
+                (**self).pdf(hit, wo, wi)
+            }
+            #[inline]
+            fn emits(&self) -> Option<Emission<F>> {
+                (**self).emits()
+            }
+        }
+
+        impl<F: Float, R: Rng + ?Sized, T: Scatter<F, R> + ?Sized> Scatter<F, R> for $ptr {
+            #[inline]
+            fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+                (**self).sample(hit, wo, rng)
             }
         }
     )*};
 }
 forward_material!(&T, Box<T>, Arc<T>);
-
-/// A material behind a shared pointer, as a trait object: the material type of a
-/// [`DynScene`](crate::DynScene), where one material may serve many objects.
-///
-/// `Arc::new(my_material).into()` makes one (so `scene.add(Box::new(shape),
-/// Arc::new(material))` needs no casts), and so does an `Arc<dyn Material>` already shared.
-#[derive(Clone)]
-pub struct SharedMaterial<F, R: ?Sized>(pub Arc<dyn Material<F, R> + Send + Sync>);
-
-impl<F: Float, R: Rng + ?Sized, T: Material<F, R> + Send + Sync + 'static> From<Arc<T>>
-    for SharedMaterial<F, R>
-{
-    fn from(material: Arc<T>) -> Self {
-        Self(material)
-    }
-}
-
-impl<F: Float, R: Rng + ?Sized> From<Arc<dyn Material<F, R> + Send + Sync>> for SharedMaterial<F, R> {
-    fn from(material: Arc<dyn Material<F, R> + Send + Sync>) -> Self {
-        Self(material)
-    }
-}
-
-impl<F: Float, R: Rng + ?Sized> Material<F, R> for SharedMaterial<F, R> {
-    #[inline]
-    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
-        self.0.scatter(ray, hit, rng)
-    }
-    #[inline]
-    fn diffuse_albedo(&self) -> Option<Color<F>> {
-        self.0.diffuse_albedo()
-    }
-    #[inline]
-    fn emission(&self) -> Option<Emission<F>> {
-        self.0.emission()
-    }
-}
-
-impl<F, R: ?Sized> std::fmt::Debug for SharedMaterial<F, R> {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("SharedMaterial(dyn Material)")
-    }
-}
-
-/// The enum fast path: every concrete material, dispatched by `match`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum MaterialKind<F> {
-    /// A [`Mirror`].
-    Mirror(Mirror<F>),
-    /// A matte [`Lambertian`] surface.
-    Lambertian(Lambertian<F>),
-    /// A refracting [`Dielectric`] (glass).
-    Dielectric(Dielectric<F>),
-    /// A light-giving [`Emissive`] surface.
-    Emissive(Emissive<F>),
-}
-
-impl<F: Float, R: Rng + ?Sized> Material<F, R> for MaterialKind<F> {
-    #[inline(always)]
-    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
-        match self {
-            Self::Mirror(m) => Material::<F, R>::scatter(m, ray, hit, rng),
-            Self::Lambertian(m) => m.scatter(ray, hit, rng),
-            Self::Dielectric(m) => m.scatter(ray, hit, rng),
-            Self::Emissive(m) => m.scatter(ray, hit, rng),
-        }
-    }
-    #[inline]
-    fn diffuse_albedo(&self) -> Option<Color<F>> {
-        match self {
-            Self::Mirror(m) => Material::<F, R>::diffuse_albedo(m),
-            Self::Lambertian(m) => Material::<F, R>::diffuse_albedo(m),
-            Self::Dielectric(m) => Material::<F, R>::diffuse_albedo(m),
-            Self::Emissive(m) => Material::<F, R>::diffuse_albedo(m),
-        }
-    }
-    #[inline]
-    fn emission(&self) -> Option<Emission<F>> {
-        match self {
-            Self::Emissive(m) => Material::<F, R>::emission(m),
-            _ => None,
-        }
-    }
-}
-
-impl<F> From<Mirror<F>> for MaterialKind<F> {
-    fn from(m: Mirror<F>) -> Self {
-        Self::Mirror(m)
-    }
-}
-
-impl<F> From<Lambertian<F>> for MaterialKind<F> {
-    fn from(m: Lambertian<F>) -> Self {
-        Self::Lambertian(m)
-    }
-}
-
-impl<F> From<Dielectric<F>> for MaterialKind<F> {
-    fn from(m: Dielectric<F>) -> Self {
-        Self::Dielectric(m)
-    }
-}
-
-impl<F> From<Emissive<F>> for MaterialKind<F> {
-    fn from(m: Emissive<F>) -> Self {
-        Self::Emissive(m)
-    }
-}
-
-impl<F: Float> MaterialKind<F> {
-    /// This material in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
-    pub fn cast<G: Float>(&self) -> crate::error::Result<MaterialKind<G>> {
-        Ok(match self {
-            Self::Mirror(m) => Mirror::new(m.albedo().cast())?.into(),
-            Self::Lambertian(m) => Lambertian::new(m.albedo().cast())?
-                .with_sampler(m.sampler())
-                .into(),
-            Self::Dielectric(m) => Dielectric::new(crate::float::to(m.refractive_index()))?
-                .with_albedo(m.albedo().cast())?
-                .with_reflectance(m.reflectance())
-                .into(),
-            Self::Emissive(m) => m.cast()?.into(),
-        })
-    }
-}

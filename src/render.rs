@@ -21,7 +21,7 @@ use crate::camera::Camera;
 use crate::error::Result;
 use crate::float::Float;
 use crate::image::Image;
-use crate::material::Material;
+use crate::material::Scatter;
 use crate::sampling::DefaultRng;
 use crate::scene::Layout;
 use crate::scene::Scene;
@@ -86,7 +86,7 @@ pub fn render<F, S, M, C>(scene: &Scene<F, S, M>, camera: &C, settings: &RenderS
 where
     F: Float,
     S: Layout<F> + Sync,
-    M: Material<F, DefaultRng> + Sync,
+    M: Scatter<F, DefaultRng> + Sync,
     C: Camera<F> + Sync,
 {
     Renderer::new(scene, camera).settings(*settings).render()
@@ -192,7 +192,7 @@ impl<F, S, M, C, R> Renderer<'_, F, S, M, C, R>
 where
     F: Float,
     S: Layout<F> + Sync,
-    M: Material<F, R> + Sync,
+    M: Scatter<F, R> + Sync,
     C: Camera<F> + Sync,
     R: Rng + SeedableRng,
 {

@@ -91,6 +91,13 @@ pub fn cosine_direction<F: Float, R: Rng + ?Sized>(n: Vec3<F>, rng: &mut R) -> V
     t * lit::<F>(sin_t * cos_p) + b * lit::<F>(sin_t * sin_p) + n * lit::<F>(cos_t)
 }
 
+/// The density of a cosine-distributed direction `d` about the unit normal `n`,
+/// `max(0, n·d)/π`: what [`lambertian_direction`] and [`cosine_direction`] draw with.
+#[inline]
+pub fn cosine_pdf<F: Float>(n: Vec3<F>, d: Vec3<F>) -> F {
+    n.dot(d).max(F::zero()) * F::from_f64(std::f64::consts::FRAC_1_PI)
+}
+
 /// Two unit vectors `t`, `b` completing the unit `n` to a right-handed orthonormal frame
 /// `(t, b, n)`, without branches on small components (Duff et al. 2017, "Building an
 /// Orthonormal Basis, Revisited"): with `s = sign(n_z)`, `a = −1/(s + n_z)`, `c = n_x n_y a`,

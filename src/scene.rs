@@ -2,6 +2,7 @@
 
 mod index;
 mod layout;
+mod plain;
 
 use crate::background::Background;
 use crate::float::Float;
@@ -12,7 +13,6 @@ use crate::shape::{Hit, Hittable, ShapeKind};
 use index::Index;
 pub(crate) use index::Nearests;
 pub use layout::{Layout, Primitive};
-use rand::Rng;
 use std::marker::PhantomData;
 use std::sync::{Arc, OnceLock};
 
@@ -76,13 +76,13 @@ pub type EnumScene<F> = Scene<F, ShapeKind<F>, MaterialKind<F>>;
 /// The abstract path: boxed shapes and shared materials behind trait objects, the spec's
 /// "vector of smart pointers". `scene.add(Box::new(shape), Arc::new(material))` adds any
 /// shape and material, the user's own included.
-pub type DynScene<F, R> = Scene<F, Box<dyn Hittable<F> + Send + Sync>, SharedMaterial<F, R>>;
+pub type DynScene<F> = Scene<F, Box<dyn Hittable<F> + Send + Sync>, SharedMaterial<F>>;
 
 impl<F: Float> EnumScene<F> {
     /// The same scene on the abstract path: every shape boxed, every material shared
     /// behind a trait object. It renders to the same bytes, only slower.
     #[must_use]
-    pub fn to_dyn<R: Rng + ?Sized + 'static>(&self) -> DynScene<F, R> {
+    pub fn to_dyn(&self) -> DynScene<F> {
         let mut scene = DynScene::new(self.background);
         scene.set_acceleration(self.acceleration);
         for o in &self.objects {
@@ -92,7 +92,7 @@ impl<F: Float> EnumScene<F> {
                 ShapeKind::Triangle(t) => Box::new(*t),
                 ShapeKind::Mesh(m) => Box::new(Arc::clone(m)),
             };
-            let material: SharedMaterial<F, R> = match o.material {
+            let material: SharedMaterial<F> = match o.material {
                 MaterialKind::Mirror(m) => Arc::new(m).into(),
                 MaterialKind::Lambertian(m) => Arc::new(m).into(),
                 MaterialKind::Dielectric(m) => Arc::new(m).into(),
@@ -178,9 +178,18 @@ impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
             .get_or_init(|| Index::build(&self.objects, self.acceleration))
     }
 
+    /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.
+    #[inline]
+    pub fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
+        self.index().occluded(&self.objects, ray, t_max)
+    }
+}
+
+impl<F: Float, S: Layout<F>, M: Material<F>> Scene<F, S, M> {
     /// The nearest hit in `(0, t_max)` and the material hit. At equal distance the part
     /// that comes first wins (the object added first; of a mesh's triangles, the first),
-    /// so the answer never depends on the acceleration structure.
+    /// so the answer never depends on the acceleration structure. The hit carries its
+    /// surface coordinates if the material [reads them](Material::reads_coordinates).
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &M)> {
         let (hit, object) = self.hit_object(ray, t_max)?;
@@ -207,21 +216,11 @@ impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
     }
 
     /// The objects that give off light and are sampled as lights, with the probability of
-    /// each ([`Emitters`]); built on the first call after a change. `R` is any generator
-    /// the materials accept (emission does not depend on it).
+    /// each ([`Emitters`]); built on the first call after a change.
     #[inline]
-    pub fn emitters<R: Rng + ?Sized>(&self) -> &Emitters
-    where
-        M: Material<F, R>,
-    {
+    pub fn emitters(&self) -> &Emitters {
         self.emitters
-            .get_or_init(|| Emitters::new::<F, S, M, R>(self.objects.iter().map(|o| (&o.shape, &o.material))))
-    }
-
-    /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.
-    #[inline]
-    pub fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        self.index().occluded(&self.objects, ray, t_max)
+            .get_or_init(|| Emitters::new(self.objects.iter().map(|o| (&o.shape, &o.material))))
     }
 }
 

@@ -1,6 +1,7 @@
 //! The spec's abstract object: the [`Hittable`] trait, the [`Hit`] it reports, and
 //! [`ShapeKind`], the enum fast path over the concrete shapes.
 
+mod hit;
 mod kind;
 mod mesh;
 mod plane;
@@ -10,6 +11,7 @@ mod sphere4;
 mod triangle;
 mod triangle4;
 
+pub use hit::{Coordinates, Hit, Surface, flat_hit_error, flat_surface};
 pub use kind::ShapeKind;
 pub use mesh::Mesh;
 pub use plane::Plane;
@@ -27,94 +29,6 @@ use crate::float::Float;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
 use std::sync::Arc;
-
-/// Where a ray meets a surface.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hit<F> {
-    /// The ray parameter of the hit, in `(0, t_max)`.
-    pub t: F,
-    /// The hit point.
-    pub point: Vec3<F>,
-    /// A bound on the absolute rounding error of each component of `point`
-    /// (pbrt-v4's error-bounded intersection), used to offset secondary rays.
-    pub error: Vec3<F>,
-    /// The unit surface normal, on the side the ray came from (`normal·D ≤ 0`).
-    pub normal: Vec3<F>,
-    /// Whether the ray hit the side the shape's outward normal points to.
-    pub front_face: bool,
-}
-
-impl<F: Float> Hit<F> {
-    /// A hit whose normal is turned to face the incoming `direction`.
-    #[inline]
-    pub fn new(t: F, point: Vec3<F>, error: Vec3<F>, outward: Vec3<F>, direction: Vec3<F>) -> Self {
-        let front_face = direction.dot(outward) <= F::zero();
-        let normal = if front_face { outward } else { -outward };
-        Self {
-            t,
-            point,
-            error,
-            normal,
-            front_face,
-        }
-    }
-
-    /// A ray leaving the hit point along the unit `direction`, its origin moved off the
-    /// surface just far enough that it cannot hit the same surface again
-    /// ([`offset_ray_origin`]).
-    #[must_use]
-    #[inline]
-    pub fn spawn(&self, direction: Vec3<F>) -> Ray<F> {
-        Ray::new(
-            offset_ray_origin(self.point, self.error, self.normal, direction),
-            direction,
-        )
-    }
-}
-
-/// pbrt-v4's `OffsetRayOrigin`: moves `p` along the normal `n` past the box of its
-/// rounding error `err`, to the side `w` points to, then one more representable value
-/// away, so the new origin lies strictly on that side of the true surface:
-///
-/// `d = |n|·err`, `p' = p ± d·n`, each component of `p'` rounded away from `p`.
-///
-/// This replaces the textbook's fixed `t_min = 0.001`, which is scale-blind: too large
-/// for small objects (rays skip through a tiny glass sphere) and too small far from the
-/// origin (rays re-hit their own surface, "shadow acne").
-#[must_use]
-#[inline]
-pub fn offset_ray_origin<F: Float>(p: Vec3<F>, err: Vec3<F>, n: Vec3<F>, w: Vec3<F>) -> Vec3<F> {
-    let d = n.abs().dot(err);
-    let offset = if w.dot(n) < F::zero() { -(n * d) } else { n * d };
-    let po = p + offset;
-    let [x, y, z] = F::step_toward_each([po.x, po.y, po.z], [offset.x, offset.y, offset.z]);
-    Vec3::new(x, y, z)
-}
-
-/// The rounding-error bound of a hit on a flat surface: the per-component box
-/// `γ(10)·(|O| + |t·D| + |A|)` around the point `O + t·D`, for a surface through the
-/// stored point `A` (`anchor`) with unit normal `n`, when `t` was computed as
-/// `((A − O)·n) / (D·n)` (as [`Plane::intersect`] does). Report it as [`Hit::error`] of a
-/// disk, a quad or a plane of your own; see [Reporting the rounding error](Hittable#reporting-the-rounding-error).
-///
-/// # Precision
-/// The bound guarantees that the exact plane `(X − A)·n = 0` passes through the box
-/// `point ± error`, which is what [`offset_ray_origin`] needs (the point's position
-/// *along* the plane is irrelevant to self-intersection and, for grazing rays, much less
-/// accurate). With `N = (A − O)·n`, `Δ = D·n`, their computed values `Ñ = N + e_N`,
-/// `Δ̃ = Δ + e_Δ` and `t̃ = (Ñ/Δ̃)(1 + δ)`, the exact point `O + t̃D` lies at
-/// (unnormalized) distance `t̃Δ − N = e_N + δÑ − t̃e_Δ` from the plane, so
-/// `|t̃Δ − N| ≤ γ(5)·Σ(|Aᵢ| + |Oᵢ|)|nᵢ| + γ(3)·Σ|t̃Dᵢ||nᵢ|`. Evaluating `Oᵢ + t̃Dᵢ` costs
-/// `γ(2)·(|Oᵢ| + |t̃Dᵢ|)` per component. In total the computed point is within
-/// `γ(7)·Σ|nᵢ|(|Oᵢ| + |t̃Dᵢ| + |Aᵢ|)` of the plane, so the per-component box
-/// `γ(7)·(|O| + |t̃D| + |A|)` reaches the plane along `n`. We report
-/// `γ(10)·(|O| + |t̃D| + |A|)`: three more roundings cover the evaluation of the bound
-/// itself.
-#[must_use]
-#[inline]
-pub fn flat_hit_error<F: Float>(ray: &Ray<F>, t: F, anchor: Vec3<F>) -> Vec3<F> {
-    (ray.origin.abs() + (ray.direction * t).abs() + anchor.abs()) * F::gamma(10)
-}
 
 /// Where a ray meets a shape, before the [`Hit`] record is made: the first phase of
 /// [`Hittable`]'s two-phase protocol. A scene keeps the nearest of these and makes the
@@ -146,119 +60,101 @@ impl<F: Float> Intersection<F> {
 /// A surface a ray can hit: the specification's abstract object.
 ///
 /// Usable as a trait object (`Box<dyn Hittable<F>>`, the spec's vector of pointers)
-/// and implemented by the enum [`ShapeKind`] for compile-time dispatch.
+/// and implemented by the enum [`ShapeKind`] for compile-time dispatch. No method has a
+/// default: a shape of your own, or an enum that wraps the library's shapes, says every
+/// answer, so a wrapper that forgets to pass one on does not compile.
 ///
-/// # Two phases
+/// # Two phases, and a third
 /// A ray may meet many shapes and needs the record of the nearest only, so a hit comes in
 /// two steps: [`intersect`](Hittable::intersect) finds the nearest `t` and what the record
 /// will need (cheap, run for every candidate), and [`finish`](Hittable::finish) makes the
-/// full [`Hit`] from it (run once, for the winner). [`hit`](Hittable::hit) does both.
+/// [`Hit`] from it (run once, for the winner). [`hit`] does both, for a shape alone. The
+/// surface coordinates, `uv` and `∂p/∂u`, come third ([`coordinates`](Hittable::coordinates)),
+/// only for a material that reads them.
 ///
 /// # Parts
 /// A shape may be made of parts that a scene indexes one by one: a [`Mesh`]'s triangles.
-/// Such a shape says how many ([`parts`](Hittable::parts)), bounds each
+/// It says how many ([`parts`](Hittable::parts)), bounds each
 /// ([`part_bounds`](Hittable::part_bounds)) and intersects each alone
-/// ([`intersect_part`](Hittable::intersect_part)); a shape of one part keeps the defaults.
+/// ([`intersect_part`](Hittable::intersect_part)). A shape of one part answers `1`, its
+/// [`bounds`](Hittable::bounds) and its [`intersect`](Hittable::intersect).
 ///
 /// # Reporting the rounding error
-/// A secondary ray starts at [`offset_ray_origin`]`(point, error, normal, direction)`,
-/// just past the box `point ± error` that [`Hit::error`] claims holds the true surface.
-/// A shape of your own must make that claim true:
+/// A secondary ray starts at [`Hit::offset_origin`], just past the box `point ± error`
+/// that [`Hit::error`] claims holds the true surface. A shape of your own must make that
+/// claim true:
 /// - **Flat surfaces** (a disk, a quad, a plane): compute `t = ((A − O)·n)/(D·n)` for a
-///   stored point `A` of the surface and its unit normal `n` — [`Plane::intersect`] does,
+///   stored point `A` of the surface and its unit normal `n` — [`Plane::crossing`] does,
 ///   with a conservative `t > 0` test a spawned ray needs, so a flat shape can keep a
-///   [`Plane`] and call it — then report [`flat_hit_error`]`(ray, t, A)`.
+///   [`Plane`] and call it — then report [`flat_hit_error`]`(ray, t, A)` (or the whole
+///   [`flat_surface`]).
 /// - **Curved surfaces**: move the point back onto the surface and bound what is left, as
 ///   `Sphere`'s hit record does (`p ← C + (p − C)·r/|p − C|`, then `γ(6)|p − C| + γ(2)|p|`
 ///   per component, pbrt-v4 §6.8.5).
-///
-/// # Sampling as a light
-/// An emissive shape that answers [`area`](Hittable::area), [`sample`](Hittable::sample)
-/// and [`pdf`](Hittable::pdf) (spheres, triangles and meshes do) is also sampled directly
-/// from the surfaces it lights (next-event estimation); one that keeps the defaults is lit
-/// only by rays that happen to hit it. `pdf` must be the density `sample` draws with.
 ///
 /// An error of zero does not move the origin at all: the rounded hit point lies on
 /// either side of the true surface about as often, and from the wrong side the new ray
 /// hits the surface it is leaving, at a tiny `t`. The image shows it as dark speckles
 /// ("shadow acne"), worse the farther the shape is from the world origin for its size,
 /// where the rounding is coarser (`tests/it/custom_shape.rs` counts them).
+///
+/// # Sampling as a light
+/// An emissive shape that answers [`area`](Hittable::area), [`sample`](Hittable::sample)
+/// and [`pdf`](Hittable::pdf) (spheres, triangles and meshes do) is also sampled directly
+/// from the surfaces it lights (next-event estimation); one that answers `None`, `None`
+/// and `0` is lit only by rays that happen to hit it. `pdf` must be the density `sample`
+/// draws with.
 pub trait Hittable<F: Float> {
     /// The nearest intersection with `t` in the open interval `(0, t_max)`, if any.
     ///
     /// The interval is open at 0 and no larger `t_min` is needed: secondary rays start
-    /// at [`offset_ray_origin`], past the surface's rounding error.
+    /// at [`Hit::offset_origin`], past the surface's rounding error.
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>>;
 
-    /// The hit record of `hit`, an intersection this shape reported for `ray`.
+    /// The hit record of `hit`, an intersection this shape reported for `ray`: point,
+    /// error bound and normals, without coordinates.
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F>;
 
-    /// The nearest hit in `(0, t_max)`, both phases at once.
-    #[inline]
-    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-        let i = self.intersect(ray, t_max)?;
-        Some(self.finish(ray, &i))
-    }
+    /// The surface coordinates at `hit` (an intersection this shape reported for `ray`,
+    /// whose record is `record`), in the shape's documented parameterisation.
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F>;
 
-    /// Whether anything blocks the ray before `t_max` (pbrt's `IntersectP`): an
-    /// any-hit query for shadow rays, which may stop at the first occluder.
-    #[inline]
-    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        self.intersect(ray, t_max).is_some()
-    }
-
-    /// A box holding the whole shape, or `None` if it is unbounded (a plane) or the
-    /// implementor does not say; only bounded parts go into a scene's [`Bvh`](crate::bvh::Bvh).
-    #[inline]
-    fn bounds(&self) -> Option<Aabb<F>> {
-        None
-    }
+    /// A box holding the whole shape, or `None` if it is unbounded (a plane); only
+    /// bounded parts go into a scene's [`Bvh`](crate::bvh::Bvh).
+    fn bounds(&self) -> Option<Aabb<F>>;
 
     /// How many parts a scene indexes this shape as (1 unless it is made of several).
-    #[inline]
-    fn parts(&self) -> u32 {
-        1
-    }
+    fn parts(&self) -> u32;
 
     /// A box holding part `part` (in `0..parts()`), or `None` if it is unbounded.
-    #[inline]
-    fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
-        let _ = part;
-        self.bounds()
-    }
+    fn part_bounds(&self, part: u32) -> Option<Aabb<F>>;
 
     /// [`intersect`](Hittable::intersect) for part `part` alone; the answer's
     /// [`part`](Intersection::part) is `part`.
-    #[inline]
-    fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
-        let _ = part;
-        self.intersect(ray, t_max)
-    }
+    fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>>;
 
-    /// The surface area, if this shape can be sampled as a light; `None` (the default)
-    /// otherwise.
-    #[inline]
-    fn area(&self) -> Option<F> {
-        None
-    }
+    /// The surface area, if this shape can be sampled as a light; `None` otherwise.
+    fn area(&self) -> Option<F>;
 
     /// A point of the surface drawn for the point `from` from three uniform numbers
     /// `u ∈ [0, 1)³`, with the density of its direction from `from` per unit solid
-    /// angle; `None` if this shape cannot be sampled (the default).
-    #[inline]
-    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
-        let _ = (from, u);
-        None
-    }
+    /// angle; `None` if this shape cannot be sampled.
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>>;
 
     /// The density per unit solid angle with which [`sample`](Hittable::sample), called
     /// for `ray.origin`, draws the direction of `ray`, a ray that hits this shape at
-    /// `hit`; 0 if this shape cannot be sampled (the default).
-    #[inline]
-    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
-        let _ = (ray, hit);
-        F::zero()
-    }
+    /// `hit`; 0 if this shape cannot be sampled.
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F;
+}
+
+/// The nearest hit of `shape` alone in `(0, t_max)`: all three phases at once. (A scene
+/// asks every shape for [`Hittable::intersect`], only the nearest for its record, and its
+/// coordinates only for a material that reads them.)
+#[inline]
+pub fn hit<F: Float, S: Hittable<F> + ?Sized>(shape: &S, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+    let i = shape.intersect(ray, t_max)?;
+    let record = shape.finish(ray, &i);
+    Some(record.with(shape.coordinates(ray, &i, &record)))
 }
 
 macro_rules! forward_hittable {
@@ -273,12 +169,8 @@ macro_rules! forward_hittable {
                 (**self).finish(ray, hit)
             }
             #[inline]
-            fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
-                (**self).hit(ray, t_max)
-            }
-            #[inline]
-            fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-                (**self).occluded(ray, t_max)
+            fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+                (**self).coordinates(ray, hit, record)
             }
             #[inline]
             fn bounds(&self) -> Option<Aabb<F>> {
@@ -320,3 +212,17 @@ impl<F: Float, T: Hittable<F> + Send + Sync + 'static> From<Box<T>> for Box<dyn 
         shape
     }
 }
+
+/// Both phases at once and the any-hit query, on a shape alone: for the unit tests.
+#[cfg(test)]
+pub(crate) trait Alone<F: Float>: Hittable<F> {
+    fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<Hit<F>> {
+        hit(self, ray, t_max)
+    }
+    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
+        self.intersect(ray, t_max).is_some()
+    }
+}
+
+#[cfg(test)]
+impl<F: Float, S: Hittable<F> + ?Sized> Alone<F> for S {}

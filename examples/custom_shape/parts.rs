@@ -6,10 +6,11 @@
 use raytrace::aabb::Aabb;
 use raytrace::prelude::*;
 use raytrace::rand::Rng;
-use raytrace::sampling::lambertian_direction;
+use raytrace::sampling::{cosine_pdf, lambertian_direction};
 use raytrace::scene::Primitive;
-use raytrace::shape::flat_hit_error;
-use raytrace::{DefaultRng, Hit, Intersection, Scatter};
+use raytrace::shape::{Coordinates, SurfaceSample, flat_surface};
+use raytrace::{BsdfSample, Emission, Eval, Hit, Intersection, Lobes};
+use std::f64::consts::PI;
 use std::sync::Arc;
 
 /// A flat round disk: the points of the plane through `center` with unit normal `n` that
@@ -40,18 +41,22 @@ impl<F: Float> Hittable<F> for Disk<F> {
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
         // The plane's t = ((C − O)·n)/(D·n), with its conservative t > 0 test: a ray spawned
         // from this disk must not find it again through a wrongly rounded sign.
-        let t = self.plane.intersect(ray, t_max)?;
+        let t = self.plane.crossing(ray, t_max)?;
         // Inside the disk: |P − C|² ≤ r².
         let inside = (ray.at(t) - self.plane.point()).length_squared() <= self.radius * self.radius;
         inside.then(|| Intersection::at(t))
     }
 
-    // Phase two, run once, for the nearest hit only: the record.
+    // Phase two, run once, for the nearest hit only: the record, with the box around the
+    // point that holds the true plane, so spawned rays start past it.
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
-        let point = ray.at(hit.t);
-        // The box around `point` that holds the true plane, so spawned rays start past it.
-        let error = flat_hit_error(ray, hit.t, self.plane.point());
-        Hit::new(hit.t, point, error, self.plane.normal(), ray.direction)
+        let surface = flat_surface(ray, hit.t, self.plane.point(), self.plane.normal());
+        Hit::new(surface, ray.direction)
+    }
+
+    // Phase three, only for a material that reads them: the plane's surface coordinates.
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        self.plane.coordinates(ray, hit, record)
     }
 
     /// Along axis `i` a disk reaches `r·√(1 − nᵢ²) = r·√(nⱼ² + nₖ²)` from its centre (the
@@ -61,6 +66,28 @@ impl<F: Float> Hittable<F> for Disk<F> {
         let reach = Vec3::new(n.y.hypot(n.z), n.x.hypot(n.z), n.x.hypot(n.y)) * r;
         let pad = reach + (c.abs() + reach) * F::gamma(8);
         Some(Aabb::new(c - pad, c + pad))
+    }
+
+    // One part: the disk itself.
+    fn parts(&self) -> u32 {
+        1
+    }
+    fn part_bounds(&self, _: u32) -> Option<Aabb<F>> {
+        self.bounds()
+    }
+    fn intersect_part(&self, _: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.intersect(ray, t_max)
+    }
+
+    // Not sampled as a light: an emissive disk is found only by the rays that hit it.
+    fn area(&self) -> Option<F> {
+        None
+    }
+    fn sample(&self, _: Vec3<F>, _: [f64; 3]) -> Option<SurfaceSample<F>> {
+        None
+    }
+    fn pdf(&self, _: &Ray<F>, _: &Hit<F>) -> F {
+        F::zero()
     }
 }
 
@@ -85,23 +112,57 @@ impl<F: Float> Checker<F> {
     }
 }
 
-impl<F: Float, R: Rng + ?Sized> Material<F, R> for Checker<F> {
-    fn scatter(&self, _ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
-        // The square (⌊x/s⌋, ⌊z/s⌋) is even when the sum of its indices is.
-        let p = hit.point;
+impl<F: Float> Checker<F> {
+    /// The albedo of the square `(⌊x/s⌋, ⌊z/s⌋)` the point lies in: even when the sum of
+    /// its indices is.
+    fn albedo(&self, p: Vec3<F>) -> Color<F> {
         let k = (p.x / self.size).floor() + (p.z / self.size).floor();
-        let albedo = if k % lit(2.0) == F::zero() {
+        if k % lit(2.0) == F::zero() {
             self.even
         } else {
             self.odd
-        };
-        Some(Scatter {
-            attenuation: albedo,
-            direction: lambertian_direction(hit.normal, rng),
+        }
+    }
+}
+
+// What the renderer asks of a material: its lobes, its BSDF times the cosine, the density
+// it samples with, and whether it emits. Here a Lambertian whose albedo depends on the
+// point: `(A(p)/π, cos θ)`, density `cos θ/π`.
+impl<F: Float> Material<F> for Checker<F> {
+    fn lobes(&self) -> Lobes {
+        Lobes::REFLECTION | Lobes::DIFFUSE
+    }
+    // It reads the point, not the surface coordinates.
+    fn reads_coordinates(&self) -> bool {
+        false
+    }
+    fn eval(&self, hit: &Hit<F>, _wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        let cos = hit.shading_normal.dot(wi);
+        (cos > F::zero()).then(|| Eval {
+            colour: self.albedo(hit.point) * (F::one() / lit::<F>(PI)),
+            scale: cos,
         })
     }
-    // `diffuse_albedo` stays `None`: it is asked without a hit point, so it cannot pick a
-    // square's colour; point lights then reach this surface only through its bounces.
+    fn pdf(&self, hit: &Hit<F>, _wo: Vec3<F>, wi: Vec3<F>) -> F {
+        cosine_pdf(hit.shading_normal, wi)
+    }
+    fn emits(&self) -> Option<Emission<F>> {
+        None
+    }
+}
+
+// The part that draws random numbers: the spec's tangent-sphere direction, weighted by
+// the square's albedo (`f·cos θ/pdf = A(p)`).
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Checker<F> {
+    fn sample(&self, hit: &Hit<F>, _wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+        let direction = lambertian_direction(hit.shading_normal, rng);
+        Some(BsdfSample {
+            direction,
+            weight: self.albedo(hit.point),
+            pdf: cosine_pdf(hit.shading_normal, direction),
+            lobe: Lobes::REFLECTION | Lobes::DIFFUSE,
+        })
+    }
 }
 
 /// Every shape of the enum path: the library's and the user's.
@@ -113,43 +174,49 @@ pub enum Shape<F> {
     Disk(Disk<F>),
 }
 
+/// `match` on a [`Shape`], the same call on every variant: every method passes every
+/// variant on, and the trait has no defaults, so a method left out does not compile.
+macro_rules! each_shape {
+    ($shape:expr, $s:ident => $call:expr) => {
+        match $shape {
+            Shape::Library($s) => $call,
+            Shape::Disk($s) => $call,
+        }
+    };
+}
+
 impl<F: Float> Hittable<F> for Shape<F> {
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
-        match self {
-            Self::Library(s) => s.intersect(ray, t_max),
-            Self::Disk(d) => d.intersect(ray, t_max),
-        }
+        each_shape!(self, s => s.intersect(ray, t_max))
     }
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
-        match self {
-            Self::Library(s) => s.finish(ray, hit),
-            Self::Disk(d) => d.finish(ray, hit),
-        }
+        each_shape!(self, s => s.finish(ray, hit))
+    }
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        each_shape!(self, s => s.coordinates(ray, hit, record))
     }
     fn bounds(&self) -> Option<Aabb<F>> {
-        match self {
-            Self::Library(s) => s.bounds(),
-            Self::Disk(d) => d.bounds(),
-        }
+        each_shape!(self, s => s.bounds())
     }
     // A mesh is made of parts, which the scene indexes one by one.
     fn parts(&self) -> u32 {
-        match self {
-            Self::Library(s) => s.parts(),
-            Self::Disk(d) => d.parts(),
-        }
+        each_shape!(self, s => s.parts())
     }
     fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
-        match self {
-            Self::Library(s) => s.part_bounds(part),
-            Self::Disk(d) => d.part_bounds(part),
-        }
+        each_shape!(self, s => s.part_bounds(part))
     }
     fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
-        match self {
-            Self::Library(s) => s.intersect_part(part, ray, t_max),
-            Self::Disk(d) => d.intersect_part(part, ray, t_max),
-        }
+        each_shape!(self, s => s.intersect_part(part, ray, t_max))
+    }
+    // An emissive library sphere stays a light the renderer samples.
+    fn area(&self) -> Option<F> {
+        each_shape!(self, s => s.area())
+    }
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        each_shape!(self, s => s.sample(from, u))
+    }
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        each_shape!(self, s => s.pdf(ray, hit))
     }
 }
 
@@ -178,43 +245,62 @@ impl<F> From<Disk<F>> for Shape<F> {
 
 /// Every material of the enum path: the library's and the user's.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Surface<F> {
-    /// A mirror, matte or glass surface.
+pub enum UserMaterial<F> {
+    /// A mirror, matte, glass or emissive surface.
     Library(MaterialKind<F>),
     /// The user's checkerboard.
     Checker(Checker<F>),
 }
 
-impl<F: Float, R: Rng + ?Sized> Material<F, R> for Surface<F> {
-    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
-        match self {
-            Self::Library(m) => m.scatter(ray, hit, rng),
-            Self::Checker(c) => c.scatter(ray, hit, rng),
+/// `match` on a [`UserMaterial`], the same call on every variant.
+macro_rules! each_material {
+    ($material:expr, $m:ident => $call:expr) => {
+        match $material {
+            UserMaterial::Library($m) => $call,
+            UserMaterial::Checker($m) => $call,
         }
+    };
+}
+
+impl<F: Float> Material<F> for UserMaterial<F> {
+    fn lobes(&self) -> Lobes {
+        each_material!(self, m => m.lobes())
     }
-    // No `R` among the arguments, so the calls name the trait's `R`.
-    fn diffuse_albedo(&self) -> Option<Color<F>> {
-        match self {
-            Self::Library(m) => Material::<F, R>::diffuse_albedo(m),
-            Self::Checker(c) => Material::<F, R>::diffuse_albedo(c),
-        }
+    fn reads_coordinates(&self) -> bool {
+        each_material!(self, m => m.reads_coordinates())
+    }
+    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        each_material!(self, m => m.eval(hit, wo, wi))
+    }
+    fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
+        each_material!(self, m => m.pdf(hit, wo, wi))
+    }
+    // An emissive library material stays an emitter.
+    fn emits(&self) -> Option<Emission<F>> {
+        each_material!(self, m => m.emits())
     }
 }
 
-impl<F> From<MaterialKind<F>> for Surface<F> {
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for UserMaterial<F> {
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+        each_material!(self, m => m.sample(hit, wo, rng))
+    }
+}
+
+impl<F> From<MaterialKind<F>> for UserMaterial<F> {
     fn from(m: MaterialKind<F>) -> Self {
         Self::Library(m)
     }
 }
 
-impl<F> From<Checker<F>> for Surface<F> {
+impl<F> From<Checker<F>> for UserMaterial<F> {
     fn from(c: Checker<F>) -> Self {
         Self::Checker(c)
     }
 }
 
 /// A scene on the enum path with the user's shapes and materials.
-pub type UserScene<F> = Scene<F, Shape<F>, Surface<F>>;
+pub type UserScene<F> = Scene<F, Shape<F>, UserMaterial<F>>;
 
 /// The floor: a disk of radius 3 at `y = −0.8`, facing up.
 fn floor<F: Float>() -> raytrace::Result<Disk<F>> {
@@ -248,7 +334,7 @@ fn glass<F: Float>() -> raytrace::Result<Dielectric<F>> {
 }
 
 /// The scene on the trait-object path: every shape boxed, every material shared.
-pub fn dyn_scene<F: Float>() -> raytrace::Result<DynScene<F, DefaultRng>> {
+pub fn dyn_scene<F: Float>() -> raytrace::Result<DynScene<F>> {
     let mut scene = DynScene::new(Background::default());
     scene.add(Box::new(floor()?), Arc::new(checker()?));
     scene.add(Box::new(ball(-1.0)?), Arc::new(mirror()?));

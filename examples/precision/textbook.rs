@@ -6,7 +6,9 @@ use raytrace::Intersection;
 use raytrace::aabb::Aabb;
 use raytrace::prelude::*;
 use raytrace::scene::Primitive;
-use raytrace::shape::{Hit, TEXTBOOK_T_MIN, textbook_sphere_record, textbook_sphere_t};
+use raytrace::shape::{
+    Coordinates, Hit, SurfaceSample, TEXTBOOK_T_MIN, textbook_sphere_record, textbook_sphere_t,
+};
 
 /// A sphere intersected the textbook way ([`raytrace::shape::textbook_sphere_hit`] with `t_min = 0.001`
 /// and no error bound, so spawned rays start at the rounded hit point).
@@ -22,9 +24,34 @@ impl<F: Float> Hittable<F> for TextbookSphere<F> {
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         textbook_sphere_record(&self.0, ray, hit.t)
     }
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        self.0.coordinates(ray, hit, record)
+    }
+    // The rest as the sphere: one part, its box, and sampled as a light the same way.
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
         self.0.bounds()
+    }
+    #[inline]
+    fn parts(&self) -> u32 {
+        1
+    }
+    #[inline]
+    fn part_bounds(&self, _: u32) -> Option<Aabb<F>> {
+        self.0.bounds()
+    }
+    #[inline]
+    fn intersect_part(&self, _: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.intersect(ray, t_max)
+    }
+    fn area(&self) -> Option<F> {
+        self.0.area()
+    }
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        self.0.sample(from, u)
+    }
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        self.0.pdf(ray, hit)
     }
 }
 
@@ -37,48 +64,52 @@ pub enum StudyShape<F> {
     Textbook(TextbookSphere<F>),
 }
 
+/// `match` on a [`StudyShape`], the same call on every variant.
+macro_rules! each_shape {
+    ($shape:expr, $s:ident => $call:expr) => {
+        match $shape {
+            StudyShape::Kind($s) => $call,
+            StudyShape::Textbook($s) => $call,
+        }
+    };
+}
+
 impl<F: Float> Hittable<F> for StudyShape<F> {
     #[inline]
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
-        match self {
-            Self::Kind(k) => k.intersect(ray, t_max),
-            Self::Textbook(s) => s.intersect(ray, t_max),
-        }
+        each_shape!(self, s => s.intersect(ray, t_max))
     }
     #[inline]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
-        match self {
-            Self::Kind(k) => k.finish(ray, hit),
-            Self::Textbook(s) => s.finish(ray, hit),
-        }
+        each_shape!(self, s => s.finish(ray, hit))
+    }
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        each_shape!(self, s => s.coordinates(ray, hit, record))
     }
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
-        match self {
-            Self::Kind(k) => k.bounds(),
-            Self::Textbook(s) => s.bounds(),
-        }
+        each_shape!(self, s => s.bounds())
     }
     #[inline]
     fn parts(&self) -> u32 {
-        match self {
-            Self::Kind(k) => k.parts(),
-            Self::Textbook(s) => s.parts(),
-        }
+        each_shape!(self, s => s.parts())
     }
     #[inline]
     fn part_bounds(&self, part: u32) -> Option<Aabb<F>> {
-        match self {
-            Self::Kind(k) => k.part_bounds(part),
-            Self::Textbook(s) => s.part_bounds(part),
-        }
+        each_shape!(self, s => s.part_bounds(part))
     }
     #[inline]
     fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
-        match self {
-            Self::Kind(k) => k.intersect_part(part, ray, t_max),
-            Self::Textbook(s) => s.intersect_part(part, ray, t_max),
-        }
+        each_shape!(self, s => s.intersect_part(part, ray, t_max))
+    }
+    fn area(&self) -> Option<F> {
+        each_shape!(self, s => s.area())
+    }
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        each_shape!(self, s => s.sample(from, u))
+    }
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        each_shape!(self, s => s.pdf(ray, hit))
     }
 }
 

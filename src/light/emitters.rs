@@ -3,7 +3,6 @@
 use crate::float::Float;
 use crate::material::{Emission, Material};
 use crate::shape::Hittable;
-use rand::Rng;
 
 /// The objects of a scene that give off light and can be sampled (an emissive sphere,
 /// triangle or mesh), for next-event estimation: emitter `k` is chosen with probability
@@ -31,18 +30,17 @@ impl Emitters {
     /// The emitters among a scene's objects, given as `(shape, material)` in the scene's
     /// order. If their powers sum to more than `f64` holds, none is sampled (the light is
     /// still found by the rays that hit it).
-    pub(crate) fn new<'a, F, S, M, R>(objects: impl Iterator<Item = (&'a S, &'a M)>) -> Self
+    pub(crate) fn new<'a, F, S, M>(objects: impl Iterator<Item = (&'a S, &'a M)>) -> Self
     where
         F: Float,
         S: Hittable<F> + 'a,
-        M: Material<F, R> + 'a,
-        R: Rng + ?Sized,
+        M: Material<F> + 'a,
     {
         let mut table = Self::default();
         let mut powers = Vec::new();
         for (i, (shape, material)) in objects.enumerate() {
             // The emission first: a mesh sums its areas only when it is asked to.
-            let Some(emission) = material.emission() else {
+            let Some(emission) = material.emits() else {
                 continue;
             };
             if let Some(p) = power(shape.area(), emission) {
@@ -113,7 +111,6 @@ fn power<F: Float>(area: Option<F>, emission: Emission<F>) -> Option<f64> {
 mod tests {
     use super::*;
     use crate::material::{Emissive, Lambertian, MaterialKind};
-    use crate::sampling::DefaultRng;
     use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
     use crate::vec3::Vec3;
 
@@ -125,7 +122,7 @@ mod tests {
     }
 
     fn table(objects: &[Object]) -> Emitters {
-        Emitters::new::<f64, _, _, DefaultRng>(objects.iter().map(|(s, m)| (s, m)))
+        Emitters::new::<f64, _, _>(objects.iter().map(|(s, m)| (s, m)))
     }
 
     #[test]
@@ -153,7 +150,7 @@ mod tests {
         assert_eq!(e.choose(p * 0.999), (1, e.probabilities()[0]));
         assert_eq!(e.choose(p * 1.001).0, 3);
         assert_eq!(e.choose(1.0 - 1e-16).0, 3);
-        let emission = |o: &Object| Material::<f64, DefaultRng>::emission(&o.1).unwrap();
+        let emission = |o: &Object| Material::<f64>::emits(&o.1).unwrap();
         for (k, &i) in e.objects().iter().enumerate() {
             let o = &objects[i as usize];
             assert_eq!(e.probability_of(o.0.area(), emission(o)), e.probabilities()[k]);

@@ -1,14 +1,13 @@
 //! A transparent, refracting material (glass, water): the spec's refraction extra.
 
-use super::{Material, Scatter};
+use super::{BsdfSample, Emission, Eval, Lobes, Material, Scatter};
 use crate::error::Result;
 use crate::float::Float;
 use crate::optics::{fresnel, reflect, refract, schlick_reflectance};
-use crate::ray::Ray;
 use crate::sampling::uniform;
 use crate::shape::Hit;
 use crate::validate;
-use crate::vec3::Color;
+use crate::vec3::{Color, Vec3};
 use rand::Rng;
 
 /// A dielectric (glass-like) surface with refractive index `n` relative to the medium
@@ -111,29 +110,61 @@ impl<F: Float> Dielectric<F> {
     }
 }
 
-impl<F: Float, R: Rng + ?Sized> Material<F, R> for Dielectric<F> {
-    /// Always scatters (reflects or refracts). Draws exactly one uniform number per call,
-    /// even under total internal reflection, so the random stream does not depend on a
-    /// decision that f32 and f64 can take differently near the critical angle.
+impl<F: Float> Material<F> for Dielectric<F> {
+    /// No: it has no texture.
+    #[inline]
+    fn reads_coordinates(&self) -> bool {
+        false
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        Lobes::REFLECTION | Lobes::TRANSMISSION | Lobes::DELTA
+    }
+
+    /// None: both lobes are deltas.
+    #[inline]
+    fn eval(&self, _: &Hit<F>, _: Vec3<F>, _: Vec3<F>) -> Option<Eval<F>> {
+        None
+    }
+
+    #[inline]
+    fn pdf(&self, _: &Hit<F>, _: Vec3<F>, _: Vec3<F>) -> F {
+        F::zero()
+    }
+
+    #[inline]
+    fn emits(&self) -> Option<Emission<F>> {
+        None
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Dielectric<F> {
+    /// Always scatters (reflects or refracts), with weight `A`. Draws exactly one uniform
+    /// number per call, even under total internal reflection, so the random stream does
+    /// not depend on a decision that f32 and f64 can take differently near the critical
+    /// angle.
     // Always inlined: called out of line, it takes the hit by reference, and the batched
     // renderer then writes every ray's hit to memory, glass or not (+3 % instructions).
     #[inline(always)]
-    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
-        let (d, n) = (ray.direction, hit.normal);
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+        let (d, n) = (-wo, hit.shading_normal);
         let eta = self.eta(hit.front_face);
-        // `hit.normal` faces the ray, so cos θ₁ = −D·N ≥ 0 (clamped by the optics functions).
+        // `n` faces the ray, so cos θ₁ = −D·N ≥ 0 (clamped by the optics functions).
         let cos_i = -d.dot(n);
         let reflectance = self.reflectance_at(cos_i, eta);
         let u = uniform(rng);
         // `refract` returns `None` under total internal reflection (the same clamped test
         // that makes `R = 1`): reflect. Otherwise reflect when `u < R`, probability `R`.
-        let direction = match refract(d, n, eta) {
-            Some(t) if u >= reflectance.to_f64() => t,
-            _ => reflect(d, n),
+        let (direction, pdf, lobe) = match refract(d, n, eta) {
+            Some(t) if u >= reflectance.to_f64() => (t, F::one() - reflectance, Lobes::TRANSMISSION),
+            _ => (reflect(d, n), reflectance, Lobes::REFLECTION),
         };
-        Some(Scatter {
-            attenuation: self.albedo,
+        Some(BsdfSample {
             direction,
+            weight: self.albedo,
+            pdf,
+            lobe: lobe | Lobes::DELTA,
         })
     }
 }
@@ -141,7 +172,8 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for Dielectric<F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::vec3::Vec3;
+    use crate::ray::Ray;
+    use crate::shape::Surface;
     use std::convert::Infallible;
 
     /// A generator that always returns the same word: `u64::MAX` draws `u → 1⁻`
@@ -172,7 +204,7 @@ mod tests {
             Vec3::new(0.0, -1.0, 0.0)
         };
         let ray = Ray::new(Vec3::new(-theta.sin(), theta.cos(), 0.0), d);
-        (ray, Hit::new(1.0, Vec3::zero(), Vec3::zero(), outward, d))
+        (ray, Hit::new(Surface::bare(1.0, Vec3::zero(), outward), d))
     }
 
     #[test]
@@ -208,12 +240,15 @@ mod tests {
             .unwrap();
         let theta = 0.5f64;
         let (ray, hit) = hit_at(theta, true);
-        let t = glass.scatter(&ray, &hit, &mut Constant(u64::MAX)).unwrap();
-        assert_eq!(t.attenuation, Vec3::new(0.9, 0.8, 0.7));
+        let t = glass
+            .sample(&hit, -ray.direction, &mut Constant(u64::MAX))
+            .unwrap();
+        assert_eq!(t.weight, Vec3::new(0.9, 0.8, 0.7));
+        assert_eq!(t.lobe, Lobes::TRANSMISSION | Lobes::DELTA);
         assert!(t.direction.y < 0.0, "refracted into the glass");
         // Snell: sin θ₂ = sin θ₁ / 1.5.
         assert!((t.direction.x - theta.sin() / 1.5).abs() < 1e-15);
-        let r = glass.scatter(&ray, &hit, &mut Constant(0)).unwrap();
+        let r = glass.sample(&hit, -ray.direction, &mut Constant(0)).unwrap();
         assert_eq!(r.direction, reflect(ray.direction, hit.normal));
     }
 
@@ -224,11 +259,15 @@ mod tests {
         for theta in [critical + 1e-9, 1.0, 1.5] {
             let (ray, hit) = hit_at(theta, false);
             assert!(!hit.front_face);
-            let s = glass.scatter(&ray, &hit, &mut Constant(u64::MAX)).unwrap();
+            let s = glass
+                .sample(&hit, -ray.direction, &mut Constant(u64::MAX))
+                .unwrap();
             assert_eq!(s.direction, reflect(ray.direction, hit.normal), "θ = {theta}");
         }
         let (ray, hit) = hit_at(critical - 1e-6, false);
-        let s = glass.scatter(&ray, &hit, &mut Constant(u64::MAX)).unwrap();
+        let s = glass
+            .sample(&hit, -ray.direction, &mut Constant(u64::MAX))
+            .unwrap();
         assert!(
             s.direction.y < 0.0,
             "just below the critical angle it refracts out"

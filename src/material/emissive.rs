@@ -1,13 +1,11 @@
 //! A surface that gives off light: an area light.
 
-use super::{Material, Scatter};
+use super::{BsdfSample, Eval, Lambertian, Lobes, Material, Scatter};
 use crate::error::Result;
 use crate::float::Float;
-use crate::ray::Ray;
-use crate::sampling::lambertian_direction;
 use crate::shape::Hit;
 use crate::validate;
-use crate::vec3::Color;
+use crate::vec3::{Color, Vec3};
 use rand::Rng;
 
 /// The light a surface gives off: radiance `L_e` per channel, the same in every direction
@@ -119,15 +117,22 @@ impl<F: Float> Emissive<F> {
         self.albedo
     }
 
+    /// How it reflects: as a matte surface of its albedo. (Made when asked, so an emitter
+    /// stores no sampler.)
+    #[inline]
+    fn surface(&self) -> Lambertian<F> {
+        Lambertian::from_valid(self.albedo)
+    }
+
     /// Whether it reflects at all.
     #[inline]
     fn reflects(&self) -> bool {
-        self.albedo != Color::zero()
+        self.albedo() != Color::zero()
     }
 
     /// This material in scalar `G`, rounded through `f64` and re-validated.
     pub fn cast<G: Float>(&self) -> Result<Emissive<G>> {
-        Emissive::from(self.emission.cast()?).with_albedo(self.albedo.cast())
+        Emissive::from(self.emission.cast()?).with_albedo(self.albedo().cast())
     }
 }
 
@@ -140,25 +145,55 @@ impl<F: Float> From<Emission<F>> for Emissive<F> {
     }
 }
 
-impl<F: Float, R: Rng + ?Sized> Material<F, R> for Emissive<F> {
-    /// Absorbs the ray when black; otherwise scatters it as a [`Lambertian`](super::Lambertian)
-    /// surface with the specification's tangent-sphere sampler.
+impl<F: Float> Material<F> for Emissive<F> {
+    /// No: it has no texture.
     #[inline]
-    fn scatter(&self, _ray: &Ray<F>, hit: &Hit<F>, rng: &mut R) -> Option<Scatter<F>> {
-        self.reflects().then(|| Scatter {
-            attenuation: self.albedo,
-            direction: lambertian_direction(hit.normal, rng),
-        })
+    fn reads_coordinates(&self) -> bool {
+        false
+    }
+
+    /// None when black; otherwise a [`Lambertian`]'s.
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        if self.reflects() {
+            self.surface().lobes()
+        } else {
+            Lobes::NONE
+        }
     }
 
     #[inline]
-    fn diffuse_albedo(&self) -> Option<Color<F>> {
-        self.reflects().then_some(self.albedo)
+    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        self.reflects()
+            .then(|| self.surface().eval(hit, wo, wi))
+            .flatten()
     }
 
     #[inline]
-    fn emission(&self) -> Option<Emission<F>> {
+    fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
+        if self.reflects() {
+            self.surface().pdf(hit, wo, wi)
+        } else {
+            F::zero()
+        }
+    }
+
+    #[inline]
+    fn emits(&self) -> Option<Emission<F>> {
         Some(self.emission)
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Emissive<F> {
+    /// Absorbs the ray when black; otherwise scatters it as a [`Lambertian`] surface
+    /// with the specification's tangent-sphere sampler.
+    #[inline]
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+        if self.reflects() {
+            self.surface().sample(hit, wo, rng)
+        } else {
+            None
+        }
     }
 }
 
@@ -166,7 +201,7 @@ impl<F: Float, R: Rng + ?Sized> Material<F, R> for Emissive<F> {
 mod tests {
     use super::*;
     use crate::sampling::DefaultRng;
-    use crate::vec3::Vec3;
+    use crate::shape::Surface;
     use rand::SeedableRng;
 
     #[test]
@@ -181,25 +216,18 @@ mod tests {
 
     #[test]
     fn black_emitters_absorb_and_grey_ones_reflect() {
-        let hit = Hit::new(
-            1.0,
-            Vec3::zero(),
-            Vec3::zero(),
-            Vec3::new(0.0, 1.0, 0.0),
-            Vec3::new(0.0, -1.0, 0.0),
-        );
-        let ray = Ray::new(Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, -1.0, 0.0));
+        let up = Vec3::new(0.0, 1.0, 0.0);
+        let hit = Hit::new(Surface::bare(1.0, Vec3::zero(), up), -up);
         let mut rng = DefaultRng::seed_from_u64(1);
         let black = Emissive::new(Vec3::splat(4.0)).unwrap();
-        assert!(Material::<f64, _>::scatter(&black, &ray, &hit, &mut rng).is_none());
-        assert_eq!(Material::<f64, DefaultRng>::diffuse_albedo(&black), None);
+        assert!(black.sample(&hit, up, &mut rng).is_none());
+        assert_eq!(black.lobes(), Lobes::NONE);
+        assert_eq!(black.eval(&hit, up, up), None);
         let grey = black.with_albedo(Vec3::splat(0.5)).unwrap();
-        let s = Material::<f64, _>::scatter(&grey, &ray, &hit, &mut rng).unwrap();
+        let s = grey.sample(&hit, up, &mut rng).unwrap();
         assert!(s.direction.dot(hit.normal) >= 0.0);
-        assert_eq!(
-            Material::<f64, DefaultRng>::diffuse_albedo(&grey),
-            Some(Vec3::splat(0.5))
-        );
+        assert_eq!(s.weight, Vec3::splat(0.5));
+        assert!(grey.lobes().has_non_delta());
     }
 
     #[test]

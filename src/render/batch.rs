@@ -9,8 +9,8 @@
 //! The answer is bit for bit [`render_reference`](super::render_reference)'s:
 //! - each sample draws from its own generator ([`sample_rng`]), so tracing the samples
 //!   of many pixels side by side changes no draw;
-//! - each bounce's `(direct, attenuation)` is logged, and once every path has ended the
-//!   logs are folded back from the last bounce, `c ← saturate(direct + attenuation ∘ c)`:
+//! - each bounce's direct light and weight are logged, and once every path has ended the
+//!   logs are folded back from the last bounce, `c ← saturate(direct + weight ∘ c)`:
 //!   the recursion's own arithmetic, in its own order, for each path;
 //! - each ray travels with the state the recursion passes down with it (how it left its
 //!   last vertex, for the weight of the emitted light it finds);
@@ -21,16 +21,23 @@ use super::reference::{camera_ray, mean, pixel_stream, sample_rng};
 use super::trace::{Arrival, Step, Tracer, saturate};
 use crate::camera::Camera;
 use crate::float::Float;
-use crate::material::Material;
+use crate::material::Scatter;
 use crate::ray::Ray;
 use crate::scene::Layout;
 use crate::scene::Nearests;
 use crate::vec3::Color;
 use rand::{Rng, SeedableRng};
 
-/// A bounce a path went on from: its pixel, the direct light and the attenuation that
-/// combine with the colour the next ray brings back.
-type Bounce<F> = (u32, Color<F>, Color<F>);
+/// A bounce a path went on from: what combines with the colour the next ray brings back.
+#[derive(Clone, Copy)]
+struct Bounce<F> {
+    /// The path's pixel, in the band.
+    pixel: u32,
+    /// The light the bounce adds.
+    direct: Color<F>,
+    /// The sample's weight.
+    weight: Color<F>,
+}
 
 /// The buffers of one band's paths, kept from band to band.
 pub(super) struct Batch<F, R> {
@@ -85,7 +92,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         out: &mut [[f64; 3]],
     ) where
         S: Layout<F>,
-        M: Material<F, R>,
+        M: Scatter<F, R>,
         C: Camera<F>,
     {
         let spp = settings.samples_per_pixel;
@@ -127,7 +134,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
     fn trace<S, M>(&mut self, tracer: &mut Tracer<'_, F, S, M>)
     where
         S: Layout<F>,
-        M: Material<F, R>,
+        M: Scatter<F, R>,
     {
         self.ends.clear();
         self.ends.resize(self.rays.len(), Color::zero());
@@ -150,9 +157,18 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
                 let rng = &mut self.rngs[pixel as usize];
                 match tracer.shade(&rays[i], hit, depth as u32, arrivals[i], rng) {
                     Step::Done(colour) => self.ends[pixel as usize] = colour,
-                    Step::Go(next, direct, attenuation, arrival) => {
-                        log.push((pixel, direct, attenuation));
-                        self.next_rays.push(next);
+                    Step::Go {
+                        ray,
+                        direct,
+                        weight,
+                        arrival,
+                    } => {
+                        log.push(Bounce {
+                            pixel,
+                            direct,
+                            weight,
+                        });
+                        self.next_rays.push(ray);
                         self.next_pixels.push(pixel);
                         self.next_arrivals.push(arrival);
                     }
@@ -166,9 +182,9 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         // Each path's bounces fold back from its last: bounce by bounce from the deepest,
         // each entry updating its path's colour.
         for log in self.logs[..depth].iter().rev() {
-            for &(pixel, direct, attenuation) in log {
-                let end = &mut self.ends[pixel as usize];
-                *end = saturate(direct + attenuation * *end);
+            for b in log {
+                let end = &mut self.ends[b.pixel as usize];
+                *end = saturate(b.direct + b.weight * *end);
             }
         }
     }

@@ -1,88 +1,98 @@
-//! Direct light at a matte hit: from every point light, and from one sampled emitter
-//! (next-event estimation).
+//! Direct light at a surface with a non-delta lobe: from every point light, and from one
+//! sampled emitter (next-event estimation), each through the material's
+//! [`eval`](Material::eval).
 
-use super::trace::{Tracer, cosine_pdf};
-use crate::float::{Float, lit};
+use super::trace::Tracer;
+use crate::float::Float;
 use crate::light::{Emitters, power_heuristic};
-use crate::material::Material;
+use crate::material::{Lobes, Material, Scatter};
 use crate::ray::Ray;
 use crate::sampling::uniform;
 use crate::scene::Layout;
-use crate::shape::{Hit, offset_ray_origin};
-use crate::vec3::Color;
+use crate::shape::Hit;
+use crate::vec3::{Color, Vec3};
 use rand::Rng;
-use std::f64::consts::FRAC_1_PI;
 
-impl<F: Float, S: Layout<F>, M> Tracer<'_, F, S, M> {
-    /// Light arriving straight from the point lights at a matte hit with albedo `A`:
-    /// `Σ A/π · I · max(0, N·L) / d²` over the lights a shadow ray reaches unblocked.
-    pub(super) fn direct_light(&mut self, hit: &Hit<F>, albedo: Color<F>) -> Color<F> {
-        let brdf = albedo * (F::one() / lit::<F>(std::f64::consts::PI));
+impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
+    /// Light arriving straight from the point lights at `hit`, seen from `wo`:
+    /// `Σ f(wo, wi)·|cos θᵢ| · I/d²` over the lights a shadow ray reaches unblocked,
+    /// computed as `(colour ∘ I)·(scale/d²)` from the material's [`Eval`](crate::material::Eval)
+    /// (for the Lambertian `(A/π ∘ I)·(cos θ/d²)`, the specification's extra).
+    pub(super) fn direct_light(&mut self, hit: Hit<F>, material: &M, wo: Vec3<F>) -> Color<F> {
         let mut sum = Color::zero();
-        // Shadow rays leave on the normal's side: one offset origin serves every light.
-        let origin = offset_ray_origin(hit.point, hit.error, hit.normal, hit.normal);
+        // Shadow rays leave on the normal's side; a light on the other side (seen through
+        // a transmitting lobe) gets an origin on that side.
+        let above = hit.offset_origin(hit.normal);
+        let transmits = material.lobes().contains(Lobes::TRANSMISSION);
         for light in self.scene.lights() {
-            let to_light = light.position() - origin;
-            let dist2 = to_light.length_squared();
-            let Some(dir) = to_light.try_normalize() else {
+            let Some((origin, dir, dist2)) = toward(&hit, above, light.position(), transmits) else {
                 continue;
             };
-            let cos = hit.normal.dot(dir);
-            if cos <= F::zero() {
+            if !hit.sides_agree(dir) {
                 continue;
             }
+            let Some(f) = material.eval(&hit, wo, dir) else {
+                continue;
+            };
             self.rays += 1;
             if !self.scene.occluded(&Ray::new(origin, dir), dist2.sqrt()) {
-                sum = sum + brdf * light.intensity() * (cos / dist2);
+                sum = sum + f.colour * light.intensity() * (f.scale / dist2);
             }
         }
         sum
     }
 
-    /// One sample of the light the emitters send to a matte hit with albedo `A`, weighted
+    /// One sample of the light the emitters send to `hit`, seen from `wo`, weighted
     /// against the scattered ray that could find the same light:
     ///
-    /// `L = A/π · L_e · cos θ · w / p_e`, `p_e = P_k·p_ω`, `w = p_e²/(p_e² + p_s²)`,
+    /// `L = f·|cos θᵢ| · L_e · w / p_e`, `p_e = P_k·p_ω`, `w = p_e²/(p_e² + p_s²)`,
     ///
     /// for emitter `k` chosen with probability `P_k` ([`Emitters::choose`]), a point of it
-    /// drawn with density `p_ω` per solid angle ([`Hittable::sample`]), `θ` the angle at
-    /// the hit and `p_s = cos θ/π` the density of a scattered ray in that direction; 0 if
-    /// a shadow ray finds anything in between, or the emitter shows the hit its back.
+    /// drawn with density `p_ω` per solid angle ([`Hittable::sample`](crate::Hittable::sample)),
+    /// and `p_s` the material's [`pdf`](Material::pdf) of that direction; 0 if a shadow
+    /// ray finds anything in between, or the emitter shows the hit its back.
     ///
     /// Always draws four numbers (one to choose, three for the point), so the random
     /// stream does not depend on decisions f32 and f64 may take differently.
     pub(super) fn sample_emitter<R>(
         &mut self,
-        hit: &Hit<F>,
-        albedo: Color<F>,
+        hit: Hit<F>,
+        material: &M,
+        wo: Vec3<F>,
         emitters: &Emitters,
         rng: &mut R,
     ) -> Color<F>
     where
         R: Rng + ?Sized,
-        M: Material<F, R>,
+        M: Scatter<F, R>,
     {
         let choice = uniform(rng);
         let u = [uniform(rng), uniform(rng), uniform(rng)];
         let (index, chosen) = emitters.choose(choice);
         let object = &self.scene.objects()[index];
-        let Some(emission) = object.material.emission() else {
+        let Some(emission) = object.material.emits() else {
             return Color::zero();
         };
-        let origin = offset_ray_origin(hit.point, hit.error, hit.normal, hit.normal);
-        let Some(sample) = object.shape.sample(origin, u) else {
+        let above = hit.offset_origin(hit.normal);
+        let Some(sample) = object.shape.sample(above, u) else {
             return Color::zero();
         };
-        let Some(dir) = (sample.point - origin).try_normalize() else {
+        let transmits = material.lobes().contains(Lobes::TRANSMISSION);
+        let Some((origin, dir, _)) = toward(&hit, above, sample.point, transmits) else {
             return Color::zero();
         };
-        let cos = hit.normal.dot(dir);
         let radiance = emission.toward(dir.dot(sample.normal) < F::zero());
         let light_pdf = F::from_f64(chosen) * sample.pdf;
-        if cos <= F::zero() || radiance == Color::zero() || !(light_pdf > F::zero() && light_pdf.is_finite())
-        {
+        if radiance == Color::zero() || !(light_pdf > F::zero() && light_pdf.is_finite()) {
             return Color::zero();
         }
+        let Some(f) = hit
+            .sides_agree(dir)
+            .then(|| material.eval(&hit, wo, dir))
+            .flatten()
+        else {
+            return Color::zero();
+        };
         // The shadow ray stops where the scene's own intersection meets the emitter's part
         // (bit for bit the same `t`): the open interval `(0, t)` leaves the emitter out. A
         // direction that rounding takes just past the part's edge finds no light.
@@ -94,7 +104,39 @@ impl<F: Float, S: Layout<F>, M> Tracer<'_, F, S, M> {
         if self.scene.occluded(&shadow, at.t) {
             return Color::zero();
         }
-        let weight = power_heuristic(light_pdf, cosine_pdf(hit.normal, dir));
-        albedo * radiance * (cos * F::from_f64(FRAC_1_PI) * weight / light_pdf)
+        let weight = power_heuristic(light_pdf, material.pdf(&hit, wo, dir));
+        f.colour * radiance * (f.scale * weight / light_pdf)
     }
+}
+
+/// The origin, unit direction and squared distance of a shadow ray from `hit` to
+/// `target`: from `above` (the origin offset to the normal's side) when the target lies
+/// on that side, else, for a material that `transmits`, from an origin offset to the
+/// other side ([`from_below`]). `None` if the target is the origin or no light can come
+/// from it.
+#[inline(always)]
+fn toward<F: Float>(
+    hit: &Hit<F>,
+    above: Vec3<F>,
+    target: Vec3<F>,
+    transmits: bool,
+) -> Option<(Vec3<F>, Vec3<F>, F)> {
+    let to = target - above;
+    let dist2 = to.length_squared();
+    let dir = to.try_normalize()?;
+    if dir.dot(hit.normal) >= F::zero() {
+        Some((above, dir, dist2))
+    } else if transmits {
+        from_below(hit, dir, target)
+    } else {
+        None
+    }
+}
+
+/// [`toward`] for a target behind the surface (seen through a transmitting lobe).
+#[inline]
+fn from_below<F: Float>(hit: &Hit<F>, dir: Vec3<F>, target: Vec3<F>) -> Option<(Vec3<F>, Vec3<F>, F)> {
+    let below = hit.offset_origin(dir);
+    let to = target - below;
+    Some((below, to.try_normalize()?, to.length_squared()))
 }

@@ -10,7 +10,7 @@ use crate::camera::Camera;
 use crate::error::Result;
 use crate::float::{Float, lit};
 use crate::image::Image;
-use crate::material::Material;
+use crate::material::Scatter;
 use crate::ray::Ray;
 use crate::sampling::pixel_jitter;
 use crate::scene::Layout;
@@ -34,7 +34,7 @@ where
     R: Rng + SeedableRng,
     F: Float,
     S: Layout<F>,
-    M: Material<F, R>,
+    M: Scatter<F, R>,
     C: Camera<F>,
 {
     settings.validate()?;

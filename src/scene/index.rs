@@ -6,17 +6,20 @@
 //! ([`Found::offer`]). Only the nearest's hit record is made, once, by its shape
 //! ([`Hittable::finish`]). The packets are tested by every ray (a plain loop), or, once
 //! there are enough parts, are the leaves of a BVH whose leaves never mix kinds: leaf `k`
-//! is packet `k`.
+//! is packet `k`. Where no part can go in lanes and no BVH is wanted (or the scene asks
+//! for [`Acceleration::Linear`]), the index is the plain loop over the objects instead
+//! ([`super::plain`]), the same answers read as the specification states them.
 
 mod packet;
 
-use super::layout::Layout;
-use super::{Acceleration, Object};
+use super::layout::{Layout, Primitive};
+use super::{Acceleration, Object, plain};
 use crate::aabb::Aabb;
 use crate::bvh::{Bvh, Streams};
 use crate::float::Float;
+use crate::material::Material;
 use crate::ray::Ray;
-use crate::shape::Hit;
+use crate::shape::{Hit, Intersection};
 pub(crate) use packet::Found;
 use packet::{Key, Packer, Packet, kind};
 
@@ -32,6 +35,8 @@ pub(crate) struct Nearests<F> {
 /// A scene's intersection structure, built from its objects on the first query.
 #[derive(Clone, Debug)]
 pub(super) struct Index<F> {
+    /// Every query is the plain loop over the objects ([`plain`]); nothing below is used.
+    plain: bool,
     /// The packets every ray tests: all the parts, or with a BVH the unbounded and the
     /// huge ones.
     looped: Vec<Packet<F>>,
@@ -64,11 +69,17 @@ impl<F: Float> Index<F> {
         let half = 0.5 * whole.surface_area().to_f64();
         let in_tree = |k: &Key| wanted && bounds(k).is_some_and(|b| b.surface_area().to_f64() < half);
         let mut packer = Packer::new();
+        let lanes = |k: Key| !matches!(shape(&k).primitive(k.1), Primitive::Other);
+        let plain = acceleration == Acceleration::Linear || (!wanted && !keys().any(lanes));
         let mut index = Self {
+            plain,
             looped: Vec::new(),
             leaves: Vec::new(),
             bvh: None,
         };
+        if plain {
+            return index;
+        }
         let mut looped: Vec<Key> = keys().filter(|k| !in_tree(k)).collect();
         packer.pack(&mut looped, objects, &mut index.looped);
         if !wanted {
@@ -97,12 +108,17 @@ impl<F: Float> Index<F> {
     /// The nearest hit in `(0, t_max)` and the object hit; at equal distance, the part
     /// that comes first.
     #[inline]
-    pub(super) fn hit<'a, S: Layout<F>, M>(
+    pub(super) fn hit<'a, S: Layout<F>, M: Material<F>>(
         &self,
         objects: &'a [Object<S, M>],
         ray: &Ray<F>,
         t_max: F,
     ) -> Option<(Hit<F>, &'a Object<S, M>)> {
+        if self.plain {
+            let (hit, o) = plain::nearest(objects, ray, t_max)?;
+            let object = &objects[o as usize];
+            return Some((record(object, ray, &hit), object));
+        }
         let (mut nearest, mut found) = ([t_max], [Found::none()]);
         let rays = std::slice::from_ref(ray);
         for p in &self.looped {
@@ -124,7 +140,7 @@ impl<F: Float> Index<F> {
     /// (independent iterations the processor overlaps, where one ray's tests would wait on
     /// each other), then the tree is walked by the whole batch at once.
     #[inline]
-    pub(super) fn hit_all<'a, S: Layout<F>, M>(
+    pub(super) fn hit_all<'a, S: Layout<F>, M: Material<F>>(
         &self,
         objects: &'a [Object<S, M>],
         rays: &[Ray<F>],
@@ -137,6 +153,13 @@ impl<F: Float> Index<F> {
         // Read only where a part was found (`t < ∞`), so left as the last batch left it.
         if found.len() < rays.len() {
             found.resize(rays.len(), Found::none());
+        }
+        if self.plain {
+            for (i, ray) in rays.iter().enumerate() {
+                if let Some((hit, o)) = plain::nearest(objects, ray, F::infinity()) {
+                    found[i].offer(&mut t[i], hit.t, (o, hit.part), || hit.coords);
+                }
+            }
         }
         for p in &self.looped {
             p.offer(objects, rays, 0..rays.len(), t, found);
@@ -155,25 +178,56 @@ impl<F: Float> Index<F> {
 
     /// The record of the nearest hit, at `t`, described by `found`, and the object hit.
     #[inline(always)]
-    fn record<'a, S: Layout<F>, M>(
+    fn record<'a, S: Layout<F>, M: Material<F>>(
         objects: &'a [Object<S, M>],
         ray: &Ray<F>,
         t: F,
         found: &Found<F>,
     ) -> (Hit<F>, &'a Object<S, M>) {
         let object = &objects[found.key.0 as usize];
-        (object.shape.finish(ray, &found.intersection(t)), object)
+        (record(object, ray, &found.intersection(t)), object)
     }
 
     /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.
     #[inline]
     pub(super) fn occluded<S: Layout<F>, M>(&self, objects: &[Object<S, M>], ray: &Ray<F>, t_max: F) -> bool {
+        if self.plain {
+            return plain::any(objects, ray, t_max);
+        }
         self.looped.iter().any(|p| p.any(objects, ray, t_max))
             || self
                 .bvh
                 .as_ref()
                 .is_some_and(|bvh| bvh.any(ray, t_max, |k| self.leaves[k].any(objects, ray, t_max)))
     }
+}
+
+/// The hit record of `object`'s intersection `hit`: the shape's [`finish`](crate::Hittable::finish),
+/// and its [`coordinates`](crate::Hittable::coordinates) if the material reads them.
+#[inline(always)]
+fn record<F: Float, S: Layout<F>, M: Material<F>>(
+    object: &Object<S, M>,
+    ray: &Ray<F>,
+    hit: &Intersection<F>,
+) -> Hit<F> {
+    let record = object.shape.finish(ray, hit);
+    if object.material.reads_coordinates() {
+        with_coordinates(&object.shape, ray, hit, record)
+    } else {
+        record
+    }
+}
+
+/// `record` with the shape's coordinates: out of line, so the path of materials that read
+/// none stays as short as it was.
+#[inline(never)]
+fn with_coordinates<F: Float, S: Layout<F>>(
+    shape: &S,
+    ray: &Ray<F>,
+    hit: &Intersection<F>,
+    record: Hit<F>,
+) -> Hit<F> {
+    record.with(shape.coordinates(ray, hit, &record))
 }
 
 #[cfg(test)]

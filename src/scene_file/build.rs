@@ -355,7 +355,7 @@ fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
     summary.lights = scene.lights().len();
     let emits = |m: &MaterialKind<F>| matches!(m, MaterialKind::Emissive(_));
     summary.emitters = scene.objects().iter().filter(|o| emits(&o.material)).count();
-    summary.sampled_emitters = scene.emitters::<crate::sampling::DefaultRng>().len();
+    summary.sampled_emitters = scene.emitters().len();
     summary.bounds = bounds;
     summary.uses_bvh = scene.uses_bvh();
 }

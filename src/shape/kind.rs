@@ -1,6 +1,6 @@
 //! [`ShapeKind`]: the enum fast path over the concrete shapes.
 
-use super::{Hit, Hittable, Intersection, Mesh, Plane, Sphere, SurfaceSample, Triangle};
+use super::{Coordinates, Hit, Hittable, Intersection, Mesh, Plane, Sphere, SurfaceSample, Triangle};
 use crate::aabb::Aabb;
 use crate::float::Float;
 use crate::ray::Ray;
@@ -20,8 +20,7 @@ pub enum ShapeKind<F> {
     Mesh(Arc<Mesh<F>>),
 }
 
-/// `match` on a [`ShapeKind`], the same call on every variant. (`Hittable::intersect(s, …)`
-/// where a shape has an inherent `intersect` of its own.)
+/// `match` on a [`ShapeKind`], the same call on every variant.
 macro_rules! each_shape {
     ($shape:expr, $s:ident => $call:expr) => {
         match $shape {
@@ -36,15 +35,17 @@ macro_rules! each_shape {
 impl<F: Float> Hittable<F> for ShapeKind<F> {
     #[inline]
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
-        each_shape!(self, s => Hittable::intersect(s, ray, t_max))
+        each_shape!(self, s => s.intersect(ray, t_max))
     }
-    #[inline]
+    // Always inlined: out of line, every hit's record went through memory (+5 % on the
+    // spec's scenes).
+    #[inline(always)]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         each_shape!(self, s => s.finish(ray, hit))
     }
     #[inline]
-    fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
-        each_shape!(self, s => s.occluded(ray, t_max))
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        each_shape!(self, s => s.coordinates(ray, hit, record))
     }
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {

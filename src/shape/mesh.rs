@@ -1,8 +1,8 @@
 //! An indexed triangle mesh: vertices stored once, triangles as indices into them.
 
 use super::sample::{sample_triangle, triangle_area};
-use super::triangle::{checked_normal, intersect_vertices, record, unit_normal, vertex_bounds};
-use super::{Hit, Hittable, Intersection, SurfaceSample, hit_solid_angle};
+use super::triangle::{checked_normal, coordinates, intersect_vertices, record, unit_normal, vertex_bounds};
+use super::{Coordinates, Hit, Hittable, Intersection, SurfaceSample, hit_solid_angle};
 use crate::aabb::Aabb;
 use crate::error::{Error, Result};
 use crate::float::{Float, lit};
@@ -17,10 +17,17 @@ use std::sync::OnceLock;
 /// on its own and is intersected exactly as a [`Triangle`](super::Triangle) with the same
 /// vertices (watertight across shared edges, the same error-bounded hit points), while
 /// each vertex is stored once instead of in every triangle around it.
+///
+/// A mesh may also carry, per vertex, a normal ([`Mesh::with_normals`]) that its hits
+/// interpolate into a smooth shading normal, and texture coordinates
+/// ([`Mesh::with_uvs`]); without them its surface coordinates are each triangle's
+/// barycentric ones, as a [`Triangle`](super::Triangle)'s.
 #[derive(Clone, Debug)]
 pub struct Mesh<F> {
     vertices: Vec<Vec3<F>>,
     triangles: Vec<[u32; 3]>,
+    normals: Option<Vec<Vec3<F>>>,
+    uvs: Option<Vec<[F; 2]>>,
     skipped: usize,
     /// Built the first time the mesh is sampled as a light, never for other meshes.
     areas: OnceLock<Areas<F>>,
@@ -35,10 +42,23 @@ struct Areas<F> {
     total: F,
 }
 
-/// Two meshes are equal when their geometry is (whether they were sampled yet is not part of it).
+/// Two meshes are equal when their geometry and attributes are (whether they were sampled
+/// yet is not part of it).
 impl<F: PartialEq> PartialEq for Mesh<F> {
     fn eq(&self, other: &Self) -> bool {
-        (&self.vertices, &self.triangles, self.skipped) == (&other.vertices, &other.triangles, other.skipped)
+        (
+            &self.vertices,
+            &self.triangles,
+            &self.normals,
+            &self.uvs,
+            self.skipped,
+        ) == (
+            &other.vertices,
+            &other.triangles,
+            &other.normals,
+            &other.uvs,
+            other.skipped,
+        )
     }
 }
 
@@ -93,8 +113,85 @@ impl<F: Float> Mesh<F> {
             skipped: before - triangles.len(),
             vertices,
             triangles,
+            normals: None,
+            uvs: None,
             areas: OnceLock::new(),
         })
+    }
+
+    /// The same mesh with a normal per vertex (any non-zero length; each is normalised),
+    /// which its hits interpolate into the shading normal.
+    ///
+    /// # Errors
+    /// [`Error::InvalidValue`] (`what = "mesh normals"`) for a count other than the
+    /// vertices' or a normal that is not finite or is zero.
+    pub fn with_normals(self, normals: Vec<Vec3<F>>) -> Result<Self> {
+        self.check_count("mesh normals", normals.len())?;
+        let normals = normals
+            .into_iter()
+            .enumerate()
+            .map(|(k, n)| match n.try_normalize() {
+                Some(unit) if n.is_finite() => Ok(unit),
+                _ => Err(Error::invalid(
+                    "mesh normals",
+                    format!("the normal of vertex {k} is not a finite non-zero vector"),
+                )),
+            })
+            .collect::<Result<Vec<_>>>()?;
+        Ok(Self {
+            normals: Some(normals),
+            ..self
+        })
+    }
+
+    /// The same mesh with texture coordinates `(u, v)` per vertex.
+    ///
+    /// # Errors
+    /// [`Error::InvalidValue`] (`what = "mesh texture coordinates"`) for a count other
+    /// than the vertices' or a coordinate that is not finite.
+    pub fn with_uvs(self, uvs: Vec<[F; 2]>) -> Result<Self> {
+        self.check_count("mesh texture coordinates", uvs.len())?;
+        if let Some(k) = uvs
+            .iter()
+            .position(|uv| !(uv[0].is_finite() && uv[1].is_finite()))
+        {
+            return Err(Error::invalid(
+                "mesh texture coordinates",
+                format!("the coordinates of vertex {k} are not finite"),
+            ));
+        }
+        Ok(Self {
+            uvs: Some(uvs),
+            ..self
+        })
+    }
+
+    fn check_count(&self, what: &'static str, n: usize) -> Result<()> {
+        if n == self.vertices.len() {
+            Ok(())
+        } else {
+            Err(Error::invalid(
+                what,
+                format!("{n} given for {} vertices", self.vertices.len()),
+            ))
+        }
+    }
+
+    /// The unit vertex normals, if the mesh has them.
+    pub fn normals(&self) -> Option<&[Vec3<F>]> {
+        self.normals.as_deref()
+    }
+
+    /// The vertices' texture coordinates, if the mesh has them.
+    pub fn uvs(&self) -> Option<&[[F; 2]]> {
+        self.uvs.as_deref()
+    }
+
+    /// Triangle `k`'s corner normals, if the mesh has normals.
+    #[inline]
+    fn corner_normals(&self, k: u32) -> Option<[Vec3<F>; 3]> {
+        let index = self.triangles[k as usize];
+        self.normals.as_ref().map(|n| index.map(|i| n[i as usize]))
     }
 
     /// The vertex positions.
@@ -142,10 +239,16 @@ impl<F: Float> Mesh<F> {
     /// [`EnumScene::cast`](crate::EnumScene::cast) explains (triangles degenerate in `G`
     /// are left out, so a triangle's number may change).
     pub fn cast<G: Float>(&self) -> Result<Mesh<G>> {
-        let mesh = Mesh::new(
+        let mut mesh = Mesh::new(
             self.vertices.iter().map(|v| v.cast()).collect(),
             self.triangles.clone(),
         )?;
+        if let Some(normals) = &self.normals {
+            mesh = mesh.with_normals(normals.iter().map(|n| n.cast()).collect())?;
+        }
+        if let Some(uvs) = &self.uvs {
+            mesh = mesh.with_uvs(uvs.iter().map(|uv| uv.map(crate::float::to)).collect())?;
+        }
         Ok(Mesh {
             skipped: mesh.skipped + self.skipped,
             ..mesh
@@ -171,7 +274,16 @@ impl<F: Float> Hittable<F> for Mesh<F> {
     #[inline]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         let v = self.triangle(hit.part);
-        record(&v, checked_normal(v), ray, hit.t, hit.coords)
+        let normals = self.corner_normals(hit.part);
+        record(&v, checked_normal(v), ray, hit.t, hit.coords, normals)
+    }
+
+    /// As a [`Triangle`](super::Triangle)'s, from the corners' texture coordinates if the
+    /// mesh has them.
+    fn coordinates(&self, _: &Ray<F>, hit: &Intersection<F>, _: &Hit<F>) -> Coordinates<F> {
+        let index = self.triangles[hit.part as usize];
+        let uvs = self.uvs.as_ref().map(|uv| index.map(|i| uv[i as usize]));
+        coordinates(&self.triangle(hit.part), hit.coords, uvs)
     }
 
     fn bounds(&self) -> Option<Aabb<F>> {
@@ -254,8 +366,10 @@ mod tests {
             .collect();
         for (x, y) in [(0.7, 0.2), (0.2, 0.7), (0.5, 0.5), (0.1, 0.0), (0.95, 0.9)] {
             let ray = Ray::new(Vec3::new(x, y, 0.0), Vec3::new(-0.05, 0.02, -1.0).normalize());
-            let got = mesh.hit(&ray, f64::INFINITY).unwrap();
-            let want = shapes.iter().filter_map(|s| s.hit(&ray, f64::INFINITY));
+            let got = crate::shape::hit(&mesh, &ray, f64::INFINITY).unwrap();
+            let want = shapes
+                .iter()
+                .filter_map(|s| crate::shape::hit(s, &ray, f64::INFINITY));
             let want = want.reduce(|a, b| if b.t < a.t { b } else { a }).unwrap();
             assert_eq!(got, want, "({x}, {y})");
         }

@@ -1,9 +1,11 @@
 //! The infinite plane `(X − P₀)·n = 0`.
 
-use super::{Hit, Hittable, Intersection, flat_hit_error};
+use super::{Coordinates, Hit, Hittable, Intersection, Surface, SurfaceSample, flat_hit_error};
+use crate::aabb::Aabb;
 use crate::error::Result;
 use crate::float::Float;
 use crate::ray::Ray;
+use crate::sampling::orthonormal_basis;
 use crate::validate;
 use crate::vec3::Vec3;
 
@@ -12,6 +14,11 @@ use crate::vec3::Vec3;
 /// The front face is the side `n` points to: a ray coming from there gets a
 /// [`Hit`] with `front_face == true`. The plane is the set `(X − P₀)·n = 0` for the
 /// *stored* (rounded) `P₀` and `n`; the error bounds below are relative to that set.
+///
+/// Its surface coordinates are lengths along the plane from `P₀`: `u = (X − P₀)·s`,
+/// `v = (X − P₀)·t`, `(s, t, n)` the orthonormal frame of
+/// [`orthonormal_basis`]`(n)` (Mitsuba has no infinite plane to follow), so a texture
+/// of period 1 repeats every unit of length.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Plane<F> {
     point: Vec3<F>,
@@ -66,7 +73,7 @@ impl<F: Float> Plane<F> {
     /// two more roundings cover the evaluation of the bounds themselves, which may round
     /// down.
     #[inline]
-    pub fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<F> {
+    pub fn crossing(&self, ray: &Ray<F>, t_max: F) -> Option<F> {
         let n = self.normal;
         let denom = ray.direction.dot(n);
         let denom_err = ray.direction.abs().dot(n.abs()) * F::gamma(5);
@@ -85,27 +92,77 @@ impl<F: Float> Plane<F> {
     ///
     /// # Precision
     /// The bound is [`flat_hit_error`]'s for the plane through `P₀` (the derivation is
-    /// there): `t` comes from [`Plane::intersect`], `((P₀ − O)·n)/(D·n)`. The point is not
+    /// there): `t` comes from [`Plane::crossing`], `((P₀ − O)·n)/(D·n)`. The point is not
     /// projected onto the plane: that would not shrink a bound of this form, and costs a
     /// dot product and a multiply-add per hit.
     #[inline]
     fn hit_at(&self, ray: &Ray<F>, t: F) -> Hit<F> {
-        let along = ray.direction * t;
-        let point = ray.origin + along;
+        let point = ray.origin + ray.direction * t;
         let error = flat_hit_error(ray, t, self.point);
-        Hit::new(t, point, error, self.normal, ray.direction)
+        let surface = Surface {
+            t,
+            point,
+            error,
+            outward: self.normal,
+            shading_normal: None,
+        };
+        Hit::new(surface, ray.direction)
     }
 }
 
 impl<F: Float> Hittable<F> for Plane<F> {
     #[inline]
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
-        Plane::intersect(self, ray, t_max).map(Intersection::at)
+        self.crossing(ray, t_max).map(Intersection::at)
     }
 
     #[inline]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         self.hit_at(ray, hit.t)
+    }
+
+    /// Lengths along the plane from `P₀` (see [`Plane`]).
+    fn coordinates(&self, _: &Ray<F>, _: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        let (s, t) = orthonormal_basis(self.normal);
+        let from_anchor = record.point - self.point;
+        Coordinates {
+            uv: [from_anchor.dot(s), from_anchor.dot(t)],
+            dpdu: s,
+        }
+    }
+
+    /// None: the plane is unbounded.
+    #[inline]
+    fn bounds(&self) -> Option<Aabb<F>> {
+        None
+    }
+
+    #[inline]
+    fn parts(&self) -> u32 {
+        1
+    }
+
+    #[inline]
+    fn part_bounds(&self, _: u32) -> Option<Aabb<F>> {
+        None
+    }
+
+    #[inline]
+    fn intersect_part(&self, _: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.intersect(ray, t_max)
+    }
+
+    /// None: an infinite area is not sampled as a light.
+    fn area(&self) -> Option<F> {
+        None
+    }
+
+    fn sample(&self, _: Vec3<F>, _: [f64; 3]) -> Option<SurfaceSample<F>> {
+        None
+    }
+
+    fn pdf(&self, _: &Ray<F>, _: &Hit<F>) -> F {
+        F::zero()
     }
 }
 
@@ -113,6 +170,7 @@ impl<F: Float> Hittable<F> for Plane<F> {
 mod tests {
     use super::*;
     use crate::float::lit;
+    use crate::shape::Alone;
 
     /// The plane `z = −4` facing `+z`.
     fn floor<F: Float>() -> Plane<F> {

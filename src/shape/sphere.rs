@@ -1,6 +1,8 @@
 //! The sphere `|X − C|² = r²`.
 
-use super::{Hit, Hittable, Intersection, SurfaceSample, area_to_solid_angle, hit_solid_angle};
+use super::{
+    Coordinates, Hit, Hittable, Intersection, Surface, SurfaceSample, area_to_solid_angle, hit_solid_angle,
+};
 use crate::aabb::Aabb;
 use crate::error::Result;
 use crate::float::{Float, lit, to};
@@ -86,7 +88,15 @@ impl<F: Float> Sphere<F> {
         let error = local.abs() * F::gamma(6) + point.abs() * F::gamma(2);
         // The normal `l/|l|` rather than `local/r`: the two divisions run side by side
         // instead of one after the other on the path's critical chain.
-        Hit::new(t, point, error, l * (F::one() / len), ray.direction)
+        let outward = l * (F::one() / len);
+        let surface = Surface {
+            t,
+            point,
+            error,
+            outward,
+            shading_normal: None,
+        };
+        Hit::new(surface, ray.direction)
     }
 
     /// The surface area `4πr²`.
@@ -167,11 +177,44 @@ impl<F: Float> Hittable<F> for Sphere<F> {
         self.hit_at(ray, hit.t)
     }
 
+    /// Mitsuba 3's: with `n = (p − C)/r` the outward normal, `φ = atan2(n_y, n_x)` in
+    /// `[0, 2π)` and `θ = acos n_z`, `uv = (φ/2π, θ/π)` and `∂p/∂u = 2πr·(−n_y, n_x, 0)`.
+    fn coordinates(&self, _: &Ray<F>, _: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        let n = if record.front_face {
+            record.normal
+        } else {
+            -record.normal
+        };
+        let two_pi = lit::<F>(TAU);
+        let phi = n.y.atan2(n.x);
+        let phi = if phi < F::zero() { phi + two_pi } else { phi };
+        let theta = n.z.max(-F::one()).min(F::one()).acos();
+        Coordinates {
+            uv: [phi / two_pi, theta / lit(PI)],
+            dpdu: Vec3::new(-n.y, n.x, F::zero()) * (two_pi * self.radius),
+        }
+    }
+
     /// `C ± r`, widened by the rounding of the two sums (`γ(1)(|C| + r)`).
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
         let pad = (self.center.abs() + Vec3::splat(self.radius)) * F::gamma(1) + Vec3::splat(self.radius);
         Some(Aabb::new(self.center - pad, self.center + pad))
+    }
+
+    #[inline]
+    fn parts(&self) -> u32 {
+        1
+    }
+
+    #[inline]
+    fn part_bounds(&self, _: u32) -> Option<Aabb<F>> {
+        self.bounds()
+    }
+
+    #[inline]
+    fn intersect_part(&self, _: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.intersect(ray, t_max)
     }
 
     /// `4πr²`.
@@ -247,13 +290,8 @@ pub fn textbook_sphere_t<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t_min: F, t_max:
 /// bound, the normal `(P − C)/r`.
 pub fn textbook_sphere_record<F: Float>(s: &Sphere<F>, ray: &Ray<F>, t: F) -> Hit<F> {
     let point = ray.at(t);
-    Hit::new(
-        t,
-        point,
-        Vec3::zero(),
-        (point - s.center) / s.radius,
-        ray.direction,
-    )
+    let outward = (point - s.center) / s.radius;
+    Hit::new(Surface::bare(t, point, outward), ray.direction)
 }
 
 /// The textbook's fixed lower bound on `t`, *Ray Tracing in One Weekend*'s `0.001`.
@@ -263,6 +301,7 @@ pub const TEXTBOOK_T_MIN: f64 = 1e-3;
 mod tests {
     use super::*;
     use crate::float::lit;
+    use crate::shape::Alone;
 
     fn unit_sphere_at<F: Float>(z: f64) -> Sphere<F> {
         Sphere::new(Vec3::from_f64(0.0, 0.0, z), lit(1.0)).unwrap()

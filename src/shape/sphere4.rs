@@ -11,7 +11,7 @@ use crate::ray::Ray;
 /// in one SSE register, `f64` in two.
 ///
 /// A scene packs the parts its shapes' [`Layout`](crate::scene::Layout) calls spheres into
-/// these; the answer is bit for bit the one [`Sphere::hit`](super::Hittable::hit) gives for
+/// these; the answer is bit for bit the one [`Sphere::intersect`](super::Hittable::intersect) gives for
 /// each sphere alone.
 #[derive(Clone, Copy, Debug)]
 pub struct Sphere4<F> {
@@ -39,7 +39,7 @@ impl<F: Float> Sphere4<F> {
         p
     }
 
-    /// For each lane, the `t` that [`Sphere::hit`](super::Hittable::hit) reports for that
+    /// For each lane, the `t` that [`Sphere::intersect`](super::Hittable::intersect) reports for that
     /// sphere with no bound (`t_max = +∞`), or `+∞` where it reports none. (With a bound `t_max`, `Sphere::hit`
     /// reports the same `t` if it is below `t_max`, else nothing.)
     ///
@@ -93,7 +93,7 @@ impl<F: Float> Sphere4<F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shape::Hittable;
+    use crate::shape::Alone;
     use crate::vec3::Vec3;
     use rand::{RngExt, SeedableRng};
 

@@ -2,7 +2,7 @@
 //! pbrt-v4's `IntersectTriangle`).
 
 use super::sample::{sample_triangle, triangle_area};
-use super::{Hit, Hittable, Intersection, SurfaceSample, hit_solid_angle};
+use super::{Coordinates, Hit, Hittable, Intersection, Surface, SurfaceSample, hit_solid_angle};
 use crate::aabb::Aabb;
 use crate::error::{Error, Result};
 use crate::float::Float;
@@ -15,7 +15,10 @@ use crate::vec3::Vec3;
 /// Its outward normal is `(B − A)×(C − A)` normalized: the front face is the side from
 /// which `A → B → C` runs counter-clockwise. Triangles sharing an edge or a vertex (a
 /// mesh) are watertight: a ray through a shared edge or vertex hits at least one of
-/// them ([`Triangle::intersect`]).
+/// them ([`Triangle::intersect_watertight`]).
+///
+/// Its surface coordinates are Mitsuba 3's for a mesh without texture coordinates: the
+/// barycentric weights of `B` and `C`, `uv = (b₁, b₂)`, with `∂p/∂u = B − A`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Triangle<F> {
     a: Vec3<F>,
@@ -104,7 +107,7 @@ impl<F: Float> Triangle<F> {
     /// to fall back to, and none is needed for watertightness. Double-double arithmetic is
     /// not correctly rounded, so this argument does not cover it: a double-double render
     /// of a mesh was seen to miss it at a few pixels where `f64` hits.
-    pub fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<(F, [F; 3])> {
+    pub fn intersect_watertight(&self, ray: &Ray<F>, t_max: F) -> Option<(F, [F; 3])> {
         intersect_vertices(&[self.a, self.b, self.c], ray, t_max)
     }
 }
@@ -145,7 +148,7 @@ fn scaled_edge<F: Float>(e: Vec3<F>) -> Option<Vec3<F>> {
     (m > F::zero() && m.is_finite()).then(|| e / m)
 }
 
-/// The watertight intersection of `ray` with the triangle of vertices `v`: [`Triangle::intersect`].
+/// The watertight intersection of `ray` with the triangle of vertices `v`: [`Triangle::intersect_watertight`].
 #[inline]
 pub(crate) fn intersect_vertices<F: Float>(v: &[Vec3<F>; 3], ray: &Ray<F>, t_max: F) -> Option<(F, [F; 3])> {
     // 1. Translate to the ray origin and permute: kz = the axis of the largest |Dᵢ|.
@@ -235,25 +238,79 @@ pub(crate) fn intersect_vertices<F: Float>(v: &[Vec3<F>; 3], ray: &Ray<F>, t_max
 }
 
 /// The hit on the triangle of vertices `v` (unit normal `normal`) at `t` with barycentrics
-/// `[b₀, b₁, b₂]`: `P = b₀A + b₁B + b₂C`.
+/// `[b₀, b₁, b₂]`: `P = b₀A + b₁B + b₂C`. The shading normal interpolates the corners'
+/// `normals` if there are any (normalised, and turned to the outward side), else it is the
+/// outward normal.
 ///
 /// # Precision
 /// pbrt-v4 §6.8.5: the computed barycentrics are non-negative and sum to
 /// `1 + σ` with `|σ| ≤ γ(4)`, which moves `P` off the triangle's plane by at most
 /// `|σ|·|A·n̂| ≤ γ(4)·Σ|bᵢVᵢ|`; the three products and two sums add `γ(3)` per
 /// component. The error bound is `γ(7)·(|b₀A| + |b₁B| + |b₂C|)`.
-#[inline]
+// Always inlined: out of line, every shape's record (a sphere's too) went through memory.
+#[inline(always)]
 pub(crate) fn record<F: Float>(
     v: &[Vec3<F>; 3],
     normal: Vec3<F>,
     ray: &Ray<F>,
     t: F,
-    [b0, b1, b2]: [F; 3],
+    bary @ [b0, b1, b2]: [F; 3],
+    normals: Option<[Vec3<F>; 3]>,
 ) -> Hit<F> {
     let (pa, pb, pc) = (v[0] * b0, v[1] * b1, v[2] * b2);
     let point = pa + pb + pc;
     let error = (pa.abs() + pb.abs() + pc.abs()) * F::gamma(7);
-    Hit::new(t, point, error, normal, ray.direction)
+    let shading_normal = normals.and_then(|n| interpolated_normal(n, bary, normal));
+    let surface = Surface {
+        t,
+        point,
+        error,
+        outward: normal,
+        shading_normal,
+    };
+    Hit::new(surface, ray.direction)
+}
+
+/// The corner normals `n` interpolated at barycentrics `b` and normalised, turned to the
+/// side of the outward `normal`; `None` if they cancel.
+#[inline(never)]
+fn interpolated_normal<F: Float>(
+    [n0, n1, n2]: [Vec3<F>; 3],
+    [b0, b1, b2]: [F; 3],
+    normal: Vec3<F>,
+) -> Option<Vec3<F>> {
+    let n = (n0 * b0 + n1 * b1 + n2 * b2).try_normalize()?;
+    Some(if n.dot(normal) < F::zero() { -n } else { n })
+}
+
+/// The surface coordinates on the triangle of vertices `v` at barycentrics `[b₀, b₁, b₂]`,
+/// as Mitsuba 3's meshes have them: `uv` interpolates the corners' texture coordinates
+/// `uvs` (else it is `(b₁, b₂)`), and `∂p/∂u` is the edges `eᵢ` from `A` expressed in
+/// them, `(Δv₂·e₁ − Δv₁·e₂)/det`, `Δuvᵢ` the coordinates' differences (else `B − A`).
+#[inline]
+pub(crate) fn coordinates<F: Float>(
+    v: &[Vec3<F>; 3],
+    [_, b1, b2]: [F; 3],
+    uvs: Option<[[F; 2]; 3]>,
+) -> Coordinates<F> {
+    let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
+    let Some([uv0, uv1, uv2]) = uvs else {
+        return Coordinates {
+            uv: [b1, b2],
+            dpdu: e1,
+        };
+    };
+    let d1 = [uv1[0] - uv0[0], uv1[1] - uv0[1]];
+    let d2 = [uv2[0] - uv0[0], uv2[1] - uv0[1]];
+    let det = d1[0] * d2[1] - d1[1] * d2[0];
+    Coordinates {
+        uv: [uv0[0] + d1[0] * b1 + d2[0] * b2, uv0[1] + d1[1] * b1 + d2[1] * b2],
+        dpdu: if det == F::zero() {
+            e1
+        } else {
+            (e1 * d2[1] - e2 * d1[1]) / det
+        },
+    }
 }
 
 /// The box of the vertices `v`, widened by one rounding of their magnitude.
@@ -273,22 +330,41 @@ pub(super) fn products_exact_in_f64<F: Float>() -> bool {
 }
 
 impl<F: Float> Hittable<F> for Triangle<F> {
-    /// [`Triangle::intersect`], the barycentrics kept for the record;
+    /// [`Triangle::intersect_watertight`], the barycentrics kept for the record;
     /// [`Triangle4`](super::Triangle4) gives the same four triangles at a time.
     #[inline]
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
-        let (t, coords) = Triangle::intersect(self, ray, t_max)?;
+        let (t, coords) = self.intersect_watertight(ray, t_max)?;
         Some(Intersection { t, part: 0, coords })
     }
 
     #[inline]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
-        record(&self.vertices(), self.normal(), ray, hit.t, hit.coords)
+        record(&self.vertices(), self.normal(), ray, hit.t, hit.coords, None)
+    }
+
+    fn coordinates(&self, _: &Ray<F>, hit: &Intersection<F>, _: &Hit<F>) -> Coordinates<F> {
+        coordinates(&self.vertices(), hit.coords, None)
     }
 
     #[inline]
     fn bounds(&self) -> Option<Aabb<F>> {
         Some(vertex_bounds(self.vertices()))
+    }
+
+    #[inline]
+    fn parts(&self) -> u32 {
+        1
+    }
+
+    #[inline]
+    fn part_bounds(&self, _: u32) -> Option<Aabb<F>> {
+        self.bounds()
+    }
+
+    #[inline]
+    fn intersect_part(&self, _: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.intersect(ray, t_max)
     }
 
     /// `|(B − A)×(C − A)|/2`.

@@ -9,7 +9,7 @@ use crate::vec3::Vec3;
 /// Up to four triangles in structure-of-arrays layout (`vertices[v][axis].0[lane]`), so one
 /// ray is tested against all four with the same instructions per lane.
 ///
-/// The answer is bit for bit what [`Triangle::intersect`](super::Triangle::intersect) gives
+/// The answer is bit for bit what [`Triangle::intersect_watertight`](super::Triangle::intersect_watertight) gives
 /// for each triangle alone: the watertight test, operation for operation, on every lane.
 #[derive(Clone, Copy, Debug)]
 pub struct Triangle4<F> {
@@ -57,7 +57,7 @@ impl<F: Float> Triangle4<F> {
         self.hits(ray).t.any_lt(t_max)
     }
 
-    /// For each lane, the `t` that [`Triangle::intersect`](super::Triangle::intersect)
+    /// For each lane, the `t` that [`Triangle::intersect_watertight`](super::Triangle::intersect_watertight)
     /// reports with no bound (`t_max = +∞`), or `+∞` where it reports none, with what the
     /// barycentrics are made of. The steps are the scalar test's, numbered as there.
     /// Packets whose lanes all fail the edge test stop there.
@@ -212,7 +212,7 @@ mod tests {
             };
             let got = packet.hits(&ray);
             for (lane, tri) in triangles.iter().enumerate() {
-                let want = tri.intersect(&ray, F::infinity());
+                let want = tri.intersect_watertight(&ray, F::infinity());
                 let t = got.t.0[lane];
                 match want {
                     Some((wt, coords)) => {

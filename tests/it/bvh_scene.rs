@@ -1,6 +1,7 @@
 //! A scene answers the same through its BVH as through the plain loop, and both answer as
 //! the naive loop of the definition: same nearest hits, same shadow queries, same image bytes.
 
+use crate::common::Alone;
 use rand::{RngExt, SeedableRng};
 use raytrace::prelude::*;
 use raytrace::shape::Hit;

@@ -8,9 +8,11 @@ use crate::parts;
 
 use parts::Disk;
 use rand::SeedableRng;
+use raytrace::aabb::Aabb;
 use raytrace::optics::reflect;
 use raytrace::prelude::*;
 use raytrace::sampling::{lambertian_direction, orthonormal_basis, uniform};
+use raytrace::shape::{Coordinates, SurfaceSample};
 use raytrace::{DefaultRng, Hit, Image, Intersection};
 
 /// Bits of every channel of every pixel.
@@ -54,6 +56,30 @@ impl<F: Float> Hittable<F> for ZeroError<F> {
             ..self.0.finish(ray, hit)
         }
     }
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        self.0.coordinates(ray, hit, record)
+    }
+    fn bounds(&self) -> Option<Aabb<F>> {
+        self.0.bounds()
+    }
+    fn parts(&self) -> u32 {
+        1
+    }
+    fn part_bounds(&self, _: u32) -> Option<Aabb<F>> {
+        self.0.bounds()
+    }
+    fn intersect_part(&self, _: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.intersect(ray, t_max)
+    }
+    fn area(&self) -> Option<F> {
+        None
+    }
+    fn sample(&self, _: Vec3<F>, _: [f64; 3]) -> Option<SurfaceSample<F>> {
+        None
+    }
+    fn pdf(&self, _: &Ray<F>, _: &Hit<F>) -> F {
+        F::zero()
+    }
 }
 
 /// Primary rays per distance.
@@ -82,6 +108,7 @@ fn disk<F: Float>(distance: f64) -> Disk<F> {
 /// lie in the shape's [`bounds`](Hittable::bounds), if it has any (the disk's box, by
 /// which a BVH would cull it).
 fn self_hits<F: Float>(shape: &impl Hittable<F>, distance: f64, seed: u64) -> (usize, usize) {
+    use crate::common::Alone;
     let mut rng = DefaultRng::seed_from_u64(seed);
     let (u, v) = orthonormal_basis(Vec3::new(NORMAL[0], NORMAL[1], NORMAL[2]).normalize());
     let (mut again, mut spawned) = (0, 0);

@@ -180,7 +180,7 @@ fn an_emitting_plane_is_found_by_scattered_rays<F: Float>() {
         Plane::new(v(0.0, -1.0, 0.0), v(0.0, 1.0, 0.0)).unwrap(),
         Lambertian::new(a).unwrap(),
     );
-    assert!(scene.emitters::<DefaultRng>().is_empty());
+    assert!(scene.emitters().is_empty());
     let down = Ray::new(Vec3::zero(), v(0.0, -1.0, -1.0).normalize());
     for seed in 0..100 {
         assert_eq!(
@@ -213,7 +213,7 @@ fn extreme_emitters_give_finite_pixels<F: Float>() {
         Sphere::new(v(-3.0, 1.0, -4.0), lit(0.5)).unwrap(),
         Emissive::new(Vec3::zero()).unwrap(),
     );
-    assert_eq!(scene.emitters::<DefaultRng>().len(), 2);
+    assert_eq!(scene.emitters().len(), 2);
     let camera = ScreenCamera::new(24, 12).unwrap();
     let render = Renderer::new(&scene, &camera).spp(4).render().unwrap();
     assert!(

@@ -43,7 +43,7 @@ use rand::rngs::Xoshiro256PlusPlus;
 use raytrace::sampling::uniform;
 use raytrace::shape::SurfaceSample;
 use raytrace::{Background, Emissive, Lambertian, Plane};
-use raytrace::{DefaultRng, EnumScene, Float, Hittable, Sphere, Triangle, Vec3, lit};
+use raytrace::{EnumScene, Float, Hittable, Sphere, Triangle, Vec3, lit};
 use std::f64::consts::{PI, TAU};
 
 /// A sphere of radius `r` whose centre lies `ratio·r` from `from` along a skew axis.
@@ -218,7 +218,7 @@ fn emitters_scene() -> (EnumScene<f64>, Vec<f64>) {
 #[test]
 fn emitters_are_chosen_by_power() {
     let (scene, powers) = emitters_scene();
-    let emitters = scene.emitters::<DefaultRng>();
+    let emitters = scene.emitters();
     assert_eq!(emitters.objects(), &[1, 2, 5, 6, 7]);
     let total: f64 = powers.iter().sum();
     for (got, want) in emitters.probabilities().iter().zip(&powers) {

@@ -21,6 +21,7 @@
 //!
 //! These are invariants, not statistics: a single violation fails the test.
 
+use crate::common::Alone;
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use raytrace::optics::reflect;

@@ -3,11 +3,12 @@
 //! textbook's fixed `t_min` skips them), and the reflected share matches the reflectance.
 //! Every test runs in f32 and f64.
 
+use crate::common::Alone;
 use rand::SeedableRng;
 use raytrace::material::{Dielectric, Reflectance};
 use raytrace::optics::{fresnel, reflect, schlick_reflectance};
 use raytrace::prelude::*;
-use raytrace::shape::{Hit, textbook_sphere_hit};
+use raytrace::shape::{Hit, Surface, textbook_sphere_hit};
 use raytrace::{DefaultRng, Scatter};
 use std::convert::Infallible;
 
@@ -38,7 +39,7 @@ impl rand::TryRng for Constant {
 
 /// The refracted (never reflected, unless totally internally) scatter of `glass` at `hit`.
 fn refracted<F: Float>(glass: &Dielectric<F>, ray: &Ray<F>, hit: &Hit<F>) -> Vec3<F> {
-    let s: Scatter<F> = Material::<F, Constant>::scatter(glass, ray, hit, &mut Constant(u64::MAX)).unwrap();
+    let s = Scatter::<F, Constant>::sample(glass, hit, -ray.direction, &mut Constant(u64::MAX)).unwrap();
     s.direction
 }
 
@@ -354,7 +355,7 @@ fn reflected_share_matches_the_reflectance<F: Float>() {
             // hits its front (outward normal +y) or its back (outward normal −y).
             let d = Vec3::from_f64(theta.sin(), -theta.cos(), 0.0);
             let outward = Vec3::from_f64(0.0, if front { 1.0 } else { -1.0 }, 0.0);
-            let hit = Hit::new(F::one(), Vec3::zero(), Vec3::zero(), outward, d);
+            let hit = Hit::new(Surface::bare(F::one(), Vec3::zero(), outward), d);
             let ray = Ray::new(-d, d);
             let eta = if front { 1.0 / 1.5 } else { 1.5 };
             let p = match mode {
@@ -364,8 +365,8 @@ fn reflected_share_matches_the_reflectance<F: Float>() {
             let mut rng = DefaultRng::seed_from_u64(1000 + seed as u64);
             let mut reflected = 0u32;
             for _ in 0..DRAWS {
-                let s = Material::<F, DefaultRng>::scatter(&glass, &ray, &hit, &mut rng).unwrap();
-                assert_eq!(s.attenuation, Vec3::splat(F::one()), "clear glass loses nothing");
+                let s = Scatter::<F, DefaultRng>::sample(&glass, &hit, -ray.direction, &mut rng).unwrap();
+                assert_eq!(s.weight, Vec3::splat(F::one()), "clear glass loses nothing");
                 reflected += u32::from(s.direction.dot(hit.normal) > F::zero());
             }
             let ctx = format!("{} {mode:?} front {front} θ {theta:.4}: R {p:.5}", F::NAME);

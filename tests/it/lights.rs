@@ -2,29 +2,45 @@
 //! BRDF `A/π`, and superposition (lights add to each other and to the sky). Every test runs
 //! in f32 and f64.
 //!
-//! Direct light is isolated exactly by [`DirectOnly`], a test material that is diffuse for
-//! the light loop (`diffuse_albedo = Some(A)`) but scatters nothing, so a traced colour is the
-//! renderer's direct-light sum and nothing else.
+//! Direct light is isolated exactly by [`DirectOnly`], a test material that is a
+//! Lambertian for the light loop (its `eval` is `A/π·cos θ`) but scatters nothing, so a
+//! traced colour is the renderer's direct-light sum and nothing else.
 
+use crate::common::Alone;
 use rand::{Rng, SeedableRng};
 use raytrace::DefaultRng;
 use raytrace::prelude::*;
 use raytrace::render::Tracer;
 use raytrace::sampling::lambertian_direction;
 use raytrace::shape::Hit;
-use raytrace::{Image, Scatter};
+use raytrace::{BsdfSample, Emission, Eval, Image, Lobes, Scatter};
 
 /// A matte surface seen only by the lights: the renderer adds `A/π · I · cos θ / d²` for each
-/// visible light and, as `scatter` absorbs the ray, nothing else.
+/// visible light and, as `sample` absorbs the ray, nothing else.
 #[derive(Clone, Copy, Debug)]
-struct DirectOnly<F>(Color<F>);
+struct DirectOnly<F>(Lambertian<F>);
 
-impl<F: Float, R: Rng + ?Sized> Material<F, R> for DirectOnly<F> {
-    fn scatter(&self, _ray: &Ray<F>, _hit: &Hit<F>, _rng: &mut R) -> Option<Scatter<F>> {
+impl<F: Float> Material<F> for DirectOnly<F> {
+    fn lobes(&self) -> Lobes {
+        self.0.lobes()
+    }
+    fn reads_coordinates(&self) -> bool {
+        false
+    }
+    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        self.0.eval(hit, wo, wi)
+    }
+    fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
+        self.0.pdf(hit, wo, wi)
+    }
+    fn emits(&self) -> Option<Emission<F>> {
         None
     }
-    fn diffuse_albedo(&self) -> Option<Color<F>> {
-        Some(self.0)
+}
+
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for DirectOnly<F> {
+    fn sample(&self, _hit: &Hit<F>, _wo: Vec3<F>, _rng: &mut R) -> Option<BsdfSample<F>> {
+        None
     }
 }
 
@@ -64,9 +80,15 @@ fn black<F: Float>() -> Background<F> {
 /// [`OCCLUDER`] at the given centres; black background.
 fn direct_scene<F: Float>(lights: &[([f64; 3], [f64; 3])], occluders: &[[f64; 3]]) -> DirectScene<F> {
     let mut scene = DirectScene::new(black());
-    scene.add(sphere::<F>(CENTER, RADIUS), DirectOnly(v(ALBEDO)));
+    scene.add(
+        sphere::<F>(CENTER, RADIUS),
+        DirectOnly(Lambertian::new(v(ALBEDO)).unwrap()),
+    );
     for &c in occluders {
-        scene.add(sphere::<F>(c, OCCLUDER), DirectOnly(v(ALBEDO)));
+        scene.add(
+            sphere::<F>(c, OCCLUDER),
+            DirectOnly(Lambertian::new(v(ALBEDO)).unwrap()),
+        );
     }
     for &(p, i) in lights {
         scene.add_light(light(p, i));

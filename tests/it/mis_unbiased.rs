@@ -51,7 +51,7 @@ fn blocks<S, M, C>(
 ) -> Blocks
 where
     S: Layout<f64>,
-    M: Material<f64, DefaultRng>,
+    M: Scatter<f64, DefaultRng>,
     C: Camera<f64>,
 {
     let (w, h) = (camera.width(), camera.height());

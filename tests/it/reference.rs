@@ -77,7 +77,7 @@ fn first_difference(a: &Image, b: &Image) -> Option<usize> {
 fn check<F: Float, S, M>(name: &str, scene: &Scene<F, S, M>, camera: &(dyn Camera<F> + Sync), spp: u32)
 where
     S: Layout<F> + Sync,
-    M: Material<F, DefaultRng> + Sync,
+    M: Scatter<F, DefaultRng> + Sync,
 {
     check_with(name, scene, camera, spp, LightSampling::Mis);
 }
@@ -91,7 +91,7 @@ fn check_with<F: Float, S, M>(
     light_sampling: LightSampling,
 ) where
     S: Layout<F> + Sync,
-    M: Material<F, DefaultRng> + Sync,
+    M: Scatter<F, DefaultRng> + Sync,
 {
     let renderer = Renderer::new(scene, &camera)
         .spp(spp)
@@ -121,7 +121,7 @@ fn every_example<F: Float>() {
     for (name, (scene, camera)) in examples::<F>() {
         for spp in [1, 2, 3] {
             check(name, &scene, &*camera, spp);
-            check(name, &scene.to_dyn::<DefaultRng>(), &*camera, spp);
+            check(name, &scene.to_dyn(), &*camera, spp);
         }
     }
     // The user's own shape and material, through the user's enums and through trait objects.
@@ -146,7 +146,7 @@ fn the_mesh_scene_puts_mesh_triangles_on_the_bvh() {
         .sum();
     assert_eq!(triangles, 3 * 20 + 3 * 4);
     assert!(scene.uses_bvh());
-    assert!(scene.to_dyn::<DefaultRng>().uses_bvh());
+    assert!(scene.to_dyn().uses_bvh());
 }
 
 #[test]
@@ -161,22 +161,13 @@ fn the_fast_renderer_gives_the_references_bytes_in_f64() {
 
 fn every_emissive_scene<F: Float>() {
     for (name, (scene, camera)) in emissive::<F>() {
-        assert!(
-            !scene.emitters::<DefaultRng>().is_empty(),
-            "{name} samples emitters"
-        );
+        assert!(!scene.emitters().is_empty(), "{name} samples emitters");
         for spp in [1, 2, 3] {
             check(name, &scene, &*camera, spp);
-            check(name, &scene.to_dyn::<DefaultRng>(), &*camera, spp);
+            check(name, &scene.to_dyn(), &*camera, spp);
         }
         check_with(name, &scene, &*camera, 2, LightSampling::Bsdf);
-        check_with(
-            name,
-            &scene.to_dyn::<DefaultRng>(),
-            &*camera,
-            2,
-            LightSampling::Bsdf,
-        );
+        check_with(name, &scene.to_dyn(), &*camera, 2, LightSampling::Bsdf);
     }
 }
 

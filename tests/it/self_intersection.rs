@@ -8,6 +8,7 @@
 //! Scenes are scaled as a whole: the sphere's centre and radius (and the rays' origins)
 //! grow with the scale, so the geometry is the same and only the floating-point grid moves.
 
+use crate::common::Alone;
 use rand::SeedableRng;
 use raytrace::DefaultRng;
 use raytrace::optics::{reflect, refract};

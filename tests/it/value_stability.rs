@@ -10,7 +10,7 @@ use crate::parts;
 use crate::scenes;
 
 use raytrace::prelude::*;
-use raytrace::{DefaultRng, DoubleDouble, Image, Render};
+use raytrace::{DoubleDouble, Image, Render};
 
 /// FNV-1a over the bits of every channel of every pixel, then the ray count.
 fn hash(image: &Image, rays: u64) -> u64 {
@@ -48,7 +48,7 @@ fn hashes<F: Float>() -> Vec<(&'static str, u64, u64)> {
         .into_iter()
         .map(|(name, scene, camera)| {
             let fast = Renderer::new(&scene, &camera).spp(3).max_depth(8).seed(5);
-            let dyn_scene = scene.to_dyn::<DefaultRng>();
+            let dyn_scene = scene.to_dyn();
             let slow = Renderer::new(&dyn_scene, &camera).spp(3).max_depth(8).seed(5);
             (name, run(fast.render().unwrap()), run(slow.render().unwrap()))
         })

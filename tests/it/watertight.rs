@@ -13,10 +13,11 @@
 //! leaks for 6–12 % of the edge rays and ~3.7 % of the fan rays (the counts are printed
 //! with `--nocapture`).
 
+use crate::common::Alone;
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use raytrace::shape::Triangle;
-use raytrace::{Float, Hittable, Ray, Vec3, lit};
+use raytrace::{Float, Ray, Vec3, lit};
 
 /// Rays per configuration (mesh × scale × scalar).
 const RAYS: usize = 20_000;

@@ -2,7 +2,7 @@
 
 use super::packet::NONE;
 use super::*;
-use crate::shape::{Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
+use crate::shape::{Alone, Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
 use crate::vec3::Vec3;
 
 /// `n` unit-spaced small spheres in a row, and after them, where asked, a triangle and a
@@ -52,9 +52,31 @@ fn a_leaf_is_one_packet_of_one_kind() {
     }
 }
 
+/// A material that only names its object, for telling which object a query found.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Tag(u32);
+
+impl crate::material::Material<f64> for Tag {
+    fn lobes(&self) -> crate::material::Lobes {
+        crate::material::Lobes::NONE
+    }
+    fn reads_coordinates(&self) -> bool {
+        false
+    }
+    fn eval(&self, _: &Hit<f64>, _: Vec3<f64>, _: Vec3<f64>) -> Option<crate::material::Eval<f64>> {
+        None
+    }
+    fn pdf(&self, _: &Hit<f64>, _: Vec3<f64>, _: Vec3<f64>) -> f64 {
+        0.0
+    }
+    fn emits(&self) -> Option<crate::material::Emission<f64>> {
+        None
+    }
+}
+
 /// Spheres of random sizes (each added twice, so that exact ties happen), triangles, a
 /// mesh (added twice too) and a plane, through the plain loop and through a BVH.
-fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, u32>> {
+fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, Tag>> {
     use crate::shape::Plane;
     use rand::{RngExt, SeedableRng};
     let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed);
@@ -98,7 +120,7 @@ fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, u32>> {
         .enumerate()
         .map(|(i, shape)| Object {
             shape,
-            material: i as u32,
+            material: Tag(i as u32),
         })
         .collect()
 }
@@ -159,7 +181,11 @@ fn a_batch_answers_like_single_rays() {
 fn naive_loop<S: Hittable<f64>, M: Copy>(objects: &[Object<S, M>], ray: &Ray<f64>) -> Option<(Hit<f64>, M)> {
     let mut best: Option<(Hit<f64>, M)> = None;
     for o in objects {
-        if let Some(h) = o.shape.hit(ray, f64::INFINITY)
+        // Intersect and record, as the scene does for a material that reads no coordinates.
+        if let Some(h) = o
+            .shape
+            .intersect(ray, f64::INFINITY)
+            .map(|i| o.shape.finish(ray, &i))
             && best.as_ref().is_none_or(|(b, _)| h.t < b.t)
         {
             best = Some((h, o.material));
@@ -232,4 +258,53 @@ fn sizes_are_the_documented_ones() {
     );
     assert_eq!(f32s, (72, 180, 160));
     assert_eq!(f64s, (136, 328, 256));
+}
+
+/// The plain loop over the objects (`Acceleration::Linear`) and the packets in lanes a
+/// small scene gets (`Auto` below its threshold) answer every query alike, ties included.
+#[test]
+fn the_plain_loop_is_the_packed_loop() {
+    use rand::{RngExt, SeedableRng};
+    let objects: Vec<_> = mixed(7, true).into_iter().take(12).collect();
+    let parts: u32 = objects.iter().map(|o| o.shape.parts()).sum();
+    assert!(parts < Acceleration::AUTO_THRESHOLD as u32, "{parts} parts");
+    let plain = Index::build(&objects, Acceleration::Linear);
+    let packed = Index::build(&objects, Acceleration::Auto);
+    assert!(plain.plain && !packed.plain && packed.bvh.is_none());
+    let mut rng = crate::sampling::DefaultRng::seed_from_u64(7);
+    let mut v = |s: f64| {
+        Vec3::new(
+            rng.random_range(-s..s),
+            rng.random_range(-s..s),
+            rng.random_range(-s..s),
+        )
+    };
+    let centres: Vec<_> = objects
+        .iter()
+        .filter_map(|o| o.shape.bounds())
+        .map(|b| (b.min + b.max) * 0.5)
+        .collect();
+    let mut hits = 0;
+    for k in 0..4000 {
+        // Aimed near an object, so most rays meet one.
+        let Some(ray) = Ray::towards(v(9.0), centres[k % centres.len()] + v(0.2)) else {
+            continue;
+        };
+        let want = packed
+            .hit(&objects, &ray, f64::INFINITY)
+            .map(|(h, o)| (h, o.material));
+        let got = plain
+            .hit(&objects, &ray, f64::INFINITY)
+            .map(|(h, o)| (h, o.material));
+        assert_eq!(got, want, "{ray:?}");
+        hits += usize::from(want.is_some());
+        for t_max in [1.0, 5.0, 12.0] {
+            assert_eq!(
+                plain.occluded(&objects, &ray, t_max),
+                packed.occluded(&objects, &ray, t_max),
+                "{ray:?} to {t_max}"
+            );
+        }
+    }
+    assert!(hits > 2000, "most rays should hit something ({hits})");
 }

@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::float::lit;
+use crate::shape::Alone;
 
 fn v<F: Float>(x: f64, y: f64, z: f64) -> Vec3<F> {
     Vec3::from_f64(x, y, z)
@@ -27,7 +28,7 @@ fn quadrants<F: Float>() -> [Triangle<F>; 4] {
 fn hits_inside<F: Float>() {
     let tri = Triangle::new(v::<F>(-1.0, -1.0, -5.0), v(1.0, -1.0, -5.0), v(0.0, 1.0, -5.0)).unwrap();
     assert_eq!(tri.normal(), v(0.0, 0.0, 1.0), "{}", F::NAME);
-    let (t, b) = tri.intersect(&down(0.0, 0.0), F::infinity()).unwrap();
+    let (t, b) = tri.intersect_watertight(&down(0.0, 0.0), F::infinity()).unwrap();
     assert_eq!(t, lit(5.0), "{}", F::NAME);
     assert!((b[0] + b[1] + b[2] - F::one()).abs() <= lit::<F>(4.0) * F::eps());
     for (bi, want) in b.into_iter().zip([0.25, 0.25, 0.5]) {

@@ -390,3 +390,18 @@ fn chi2_sf_matches_tables_and_closed_forms() {
     assert!((p - 1e-6).abs() < 1e-9, "{p:e}");
     assert_eq!(chi2_sf(0.0, 3), 1.0);
 }
+
+/// The nearest `t` and its record at once, and the any-hit query, on a shape alone (the
+/// trait asks the scene's questions only). No surface coordinates: the record a scene makes
+/// for a material that reads none.
+pub trait Alone<F: Float>: raytrace::Hittable<F> {
+    fn hit(&self, ray: &raytrace::Ray<F>, t_max: F) -> Option<raytrace::Hit<F>> {
+        let i = self.intersect(ray, t_max)?;
+        Some(self.finish(ray, &i))
+    }
+    fn occluded(&self, ray: &raytrace::Ray<F>, t_max: F) -> bool {
+        self.intersect(ray, t_max).is_some()
+    }
+}
+
+impl<F: Float, S: raytrace::Hittable<F> + ?Sized> Alone<F> for S {}

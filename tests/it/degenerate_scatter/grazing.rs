@@ -3,9 +3,9 @@
 use super::scripted::Scripted;
 use crate::common::*;
 use proptest::prelude::*;
-use raytrace::material::{Material, Mirror};
+use raytrace::material::{Mirror, Scatter};
 use raytrace::optics::reflect;
-use raytrace::{Float, Hit, Ray, Vec3};
+use raytrace::{Float, Hit, Ray, Surface, Vec3};
 use std::f64::consts::TAU;
 
 /// A grazing incidence: unit normal `n`, and `d` at angle `α` below the tangent plane
@@ -57,7 +57,7 @@ pub(crate) fn check_reflection<F: Float>(
     scatter: impl Fn(&Ray<F>, &Hit<F>) -> Option<Vec3<F>>,
 ) -> Result<(), TestCaseError> {
     let ray = Ray::new(Vec3::zero(), case.d);
-    let hit = Hit::new(F::one(), Vec3::zero(), Vec3::zero(), case.n, case.d);
+    let hit = Hit::new(Surface::bare(F::one(), Vec3::zero(), case.n), case.d);
     let Some(r) = scatter(&ray, &hit) else {
         return Err(TestCaseError::fail(format!(
             "absorbed at grazing incidence: {case:?}"
@@ -82,7 +82,8 @@ pub(crate) fn check_reflection<F: Float>(
 /// The library's mirror.
 pub(crate) fn mirror_scatter<F: Float>(ray: &Ray<F>, hit: &Hit<F>) -> Option<Vec3<F>> {
     let m = Mirror::new(Vec3::splat(F::one())).unwrap();
-    Material::<F, Scripted>::scatter(&m, ray, hit, &mut Scripted::new(Vec::new())).map(|s| s.direction)
+    Scatter::<F, Scripted>::sample(&m, hit, -ray.direction, &mut Scripted::new(Vec::new()))
+        .map(|s| s.direction)
 }
 
 /// *Ray Tracing in One Weekend*'s metal: reflect, then absorb unless `r·n > 0` — at grazing

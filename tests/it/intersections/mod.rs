@@ -9,7 +9,7 @@
 //! This file complements `sphere_stability/` (spheres near the world origin, far small
 //! spheres) and `flat_shapes.rs` (seeded re-intersection loops): here the sphere is placed
 //! up to `10⁵` radii from the world origin, so the `|P|` term of the error bound matters;
-//! the sphere's [`hit`](Hittable::hit) is checked for *exact* agreement with
+//! the sphere's hit is checked for *exact* agreement with
 //! [`Sphere::roots`] and random `t_max`; and a triangle's hit/miss decision is checked
 //! against barycentric coordinates computed independently from the exact geometry.
 //!

@@ -1,9 +1,10 @@
 //! Planes: the cases (axis-aligned to grazing rays) and the check of hits and decisions against exact `t`.
 
 use super::{axpy, gamma, pow10, vec, zero};
+use crate::common::Alone;
 use crate::common::*;
 use proptest::prelude::*;
-use raytrace::{Float, Hittable, Plane, Ray};
+use raytrace::{Float, Plane, Ray};
 use std::f64::consts::TAU;
 
 #[derive(Clone, Copy, Debug)]

@@ -3,9 +3,10 @@
 use super::planes::*;
 use super::spheres::*;
 use super::triangles::*;
+use crate::common::Alone;
 use proptest::prelude::*;
 use proptest::test_runner::{RngSeed, TestRunner};
-use raytrace::{Float, Hittable, Ray, Triangle, lit};
+use raytrace::{Float, Ray, Triangle, lit};
 
 /// A Möller–Trumbore test that closes cracks with a tolerance, accepting `u, v ≥ −10⁻³`
 /// and `u + v ≤ 1 + 10⁻³` (common in hobby tracers): a wrong method the decision check

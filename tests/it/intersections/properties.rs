@@ -5,9 +5,9 @@ use super::power::*;
 use super::spheres::*;
 use super::triangles::*;
 use super::{CASES, HARNESS_SEED, REGRESSIONS};
+use crate::common::Alone;
 use crate::common::*;
 use proptest::prelude::*;
-use raytrace::Hittable;
 use raytrace::shape::textbook_sphere_hit;
 
 macro_rules! intersection_tests {
@@ -35,7 +35,7 @@ macro_rules! intersection_tests {
 
                 #[test]
                 fn triangle_hits_and_misses_follow_exact_barycentrics(case in tri_case::<$F>()) {
-                    check_triangle_decision(&case, |t, r| t.intersect(r, <$F>::INFINITY).map(|x| x.0))?;
+                    check_triangle_decision(&case, |t, r| t.intersect_watertight(r, <$F>::INFINITY).map(|x| x.0))?;
                 }
 
                 #[test]

@@ -3,7 +3,7 @@
 use super::{axpy, pow10, vec, zero};
 use crate::common::*;
 use proptest::prelude::*;
-use raytrace::{Float, Hit, Hittable, Ray, Sphere, lit};
+use raytrace::{Float, Hit, Ray, Sphere, lit};
 use std::f64::consts::TAU;
 
 /// A sphere, a ray and the `t_max` it is cast with.

@@ -3,7 +3,7 @@
 use super::{axpy, gamma, pow10, vec, zero};
 use crate::common::*;
 use proptest::prelude::*;
-use raytrace::{Float, Hittable, Ray, Triangle, Vec3};
+use raytrace::{Float, Ray, Triangle, Vec3};
 use std::f64::consts::TAU;
 use twofloat::TwoFloat;
 
@@ -198,7 +198,9 @@ pub(crate) fn check_triangle_hit<F: Float>(case: &TriCase<F>) -> Result<(), Test
     );
     prop_assert!(h.normal == tri.normal() || h.normal == -tri.normal());
     prop_assert!(h.normal.dot(ray.direction) <= F::zero());
-    let (_, b) = tri.intersect(ray, F::infinity()).expect("hit implies intersect");
+    let (_, b) = tri
+        .intersect_watertight(ray, F::infinity())
+        .expect("hit implies intersect");
     let sum: f64 = b.iter().map(|&x| Float::to_f64(x)).sum();
     prop_assert!(b.iter().all(|&x| x >= F::zero()), "negative barycentric {b:?}");
     prop_assert!((sum - 1.0).abs() <= gamma::<F>(4) + 2.0 * eps::<F>(), "sum {sum}");

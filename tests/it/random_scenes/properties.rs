@@ -6,7 +6,7 @@ use crate::common::config;
 use proptest::prelude::*;
 use raytrace::prelude::*;
 use raytrace::shape::Hit;
-use raytrace::{DefaultRng, Image, Scatter};
+use raytrace::{BsdfSample, DefaultRng, Emission, Eval, Image, Lobes, Scatter};
 use std::sync::Arc;
 
 /// Renders `scene` (any dispatch path) through the described camera.
@@ -14,7 +14,7 @@ fn render_desc<F, S, M>(scene: &Scene<F, S, M>, d: &SceneDesc) -> Image
 where
     F: Float,
     S: Layout<F> + Sync,
-    M: Material<F, DefaultRng> + Sync,
+    M: Scatter<F, DefaultRng> + Sync,
 {
     let settings = RenderSettings::new(d.spp, d.max_depth, d.seed).unwrap();
     let result = match &d.camera {
@@ -71,11 +71,31 @@ struct Broken<F> {
     gain: F,
 }
 
-impl<F: Float> Material<F, DefaultRng> for Broken<F> {
-    fn scatter(&self, ray: &Ray<F>, hit: &Hit<F>, _rng: &mut DefaultRng) -> Option<Scatter<F>> {
-        Some(Scatter {
-            attenuation: Vec3::splat(self.gain),
-            direction: raytrace::optics::reflect(ray.direction, hit.normal),
+impl<F: Float> Material<F> for Broken<F> {
+    fn lobes(&self) -> Lobes {
+        Lobes::REFLECTION | Lobes::DELTA
+    }
+    fn reads_coordinates(&self) -> bool {
+        false
+    }
+    fn eval(&self, _: &Hit<F>, _: Vec3<F>, _: Vec3<F>) -> Option<Eval<F>> {
+        None
+    }
+    fn pdf(&self, _: &Hit<F>, _: Vec3<F>, _: Vec3<F>) -> F {
+        F::zero()
+    }
+    fn emits(&self) -> Option<Emission<F>> {
+        None
+    }
+}
+
+impl<F: Float, R: rand::Rng + ?Sized> Scatter<F, R> for Broken<F> {
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, _rng: &mut R) -> Option<BsdfSample<F>> {
+        Some(BsdfSample {
+            direction: raytrace::optics::reflect(-wo, hit.normal),
+            weight: Vec3::splat(self.gain),
+            pdf: F::one(),
+            lobe: Lobes::REFLECTION | Lobes::DELTA,
         })
     }
 }
@@ -93,7 +113,7 @@ fn checks_reject_broken_materials<F: Float>() {
         ..ProptestConfig::default()
     });
     let dyn_scene = |d: &SceneDesc, gain: F| {
-        let mut scene = DynScene::<F, DefaultRng>::new(Background::solid(Vec3::splat(F::one())).unwrap());
+        let mut scene = DynScene::<F>::new(Background::solid(Vec3::splat(F::one())).unwrap());
         for o in build::<F>(d).objects() {
             let shape: Box<dyn Hittable<F> + Send + Sync> = Box::new(o.shape.clone());
             scene.add(shape, Arc::new(Broken { gain }));

@@ -2,9 +2,10 @@
 
 use super::scene::*;
 use rand::SeedableRng;
+use raytrace::aabb::Aabb;
 use raytrace::prelude::*;
 use raytrace::render::Tracer;
-use raytrace::shape::Hit;
+use raytrace::shape::{Coordinates, Hit, Surface, SurfaceSample};
 use raytrace::{DefaultRng, Intersection};
 
 /// A test double: two facing mirrors, the planes `y = 0` and `y = 1`, that exist only for
@@ -29,12 +30,35 @@ impl Hittable<f64> for Corridor {
         let wall = p.y.round();
         let normal = Vec3::new(0.0, 1.0, 0.0);
         Hit::new(
-            hit.t,
-            Vec3::new(p.x, wall, p.z),
-            Vec3::zero(),
-            normal,
+            Surface::bare(hit.t, Vec3::new(p.x, wall, p.z), normal),
             ray.direction,
         )
+    }
+
+    fn coordinates(&self, _: &Ray<f64>, _: &Intersection<f64>, _: &Hit<f64>) -> Coordinates<f64> {
+        Coordinates::default()
+    }
+
+    fn bounds(&self) -> Option<Aabb<f64>> {
+        None
+    }
+    fn parts(&self) -> u32 {
+        1
+    }
+    fn part_bounds(&self, _: u32) -> Option<Aabb<f64>> {
+        None
+    }
+    fn intersect_part(&self, _: u32, ray: &Ray<f64>, t_max: f64) -> Option<Intersection<f64>> {
+        self.intersect(ray, t_max)
+    }
+    fn area(&self) -> Option<f64> {
+        None
+    }
+    fn sample(&self, _: Vec3<f64>, _: [f64; 3]) -> Option<SurfaceSample<f64>> {
+        None
+    }
+    fn pdf(&self, _: &Ray<f64>, _: &Hit<f64>) -> f64 {
+        0.0
     }
 }
 

@@ -1,7 +1,7 @@
 //! The test scene (mirror, matte, ground) on both dispatch paths, and shared render helpers.
 
 use raytrace::prelude::*;
-use raytrace::{DefaultRng, Image, SharedMaterial};
+use raytrace::{Image, SharedMaterial};
 use std::sync::Arc;
 
 /// The materials of the test scene, kept concrete so each path can wrap them its own way.
@@ -43,10 +43,10 @@ pub(crate) fn enum_scene<F: Float>() -> EnumScene<F> {
 }
 
 /// The spec's path: a vector of smart pointers to trait objects.
-pub(crate) fn dyn_scene<F: Float>() -> DynScene<F, DefaultRng> {
+pub(crate) fn dyn_scene<F: Float>() -> DynScene<F> {
     let mut scene = DynScene::new(Background::default());
     for (shape, part) in parts::<F>() {
-        let material: SharedMaterial<F, DefaultRng> = match part {
+        let material: SharedMaterial<F> = match part {
             Part::Mirror(m) => Arc::new(m).into(),
             Part::Matte(m) => Arc::new(m).into(),
         };

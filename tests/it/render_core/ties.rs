@@ -3,7 +3,7 @@
 use rand::SeedableRng;
 use raytrace::DefaultRng;
 use raytrace::prelude::*;
-use raytrace::shape::Hit;
+use raytrace::shape::{Hit, Surface};
 use std::sync::Arc;
 
 /// Objects hit at exactly the same distance: the one added first wins, through the plain
@@ -33,7 +33,7 @@ fn ties_go_to_the_object_added_first_on_every_path() {
         };
         for acceleration in [Acceleration::Linear, Acceleration::Bvh] {
             let mut scene = EnumScene::<f64>::new(Background::default());
-            let mut dyn_scene = DynScene::<f64, DefaultRng>::new(Background::default());
+            let mut dyn_scene = DynScene::<f64>::new(Background::default());
             for (s, m) in build() {
                 scene.add(s, m);
                 dyn_scene.add(Box::new(s), Arc::new(m));
@@ -51,14 +51,14 @@ fn ties_go_to_the_object_added_first_on_every_path() {
             let (dyn_hit, dyn_material) = dyn_scene.hit(&ray, f64::INFINITY).unwrap();
             assert_eq!(dyn_hit, hit);
             let probe = Hit::new(
-                1.0,
-                Vec3::zero(),
-                Vec3::zero(),
-                Vec3::new(0.0, 0.0, 1.0),
+                Surface::bare(1.0, Vec3::zero(), Vec3::new(0.0, 0.0, 1.0)),
                 ray.direction,
             );
             let mut rng = DefaultRng::seed_from_u64(0);
-            let got = dyn_material.scatter(&ray, &probe, &mut rng).unwrap().attenuation;
+            let got = dyn_material
+                .sample(&probe, -ray.direction, &mut rng)
+                .unwrap()
+                .weight;
             assert_eq!(
                 got,
                 want.albedo(),

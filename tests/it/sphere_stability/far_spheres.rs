@@ -2,11 +2,12 @@
 
 use super::cases::*;
 use super::textbook;
+use crate::common::Alone;
 use crate::common::*;
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use raytrace::shape::{TEXTBOOK_T_MIN, textbook_sphere_hit};
-use raytrace::{Background, EnumScene, Float, Hittable, Mirror, PointLight, Sphere, Triangle, Vec3, lit};
+use raytrace::{Background, EnumScene, Float, Mirror, PointLight, Sphere, Triangle, Vec3, lit};
 use std::f64::consts::TAU;
 use textbook::StudyShape;
 

@@ -2,9 +2,10 @@
 
 use super::REGRESSIONS;
 use super::cases::*;
+use crate::common::Alone;
 use crate::common::*;
 use proptest::prelude::*;
-use raytrace::{Float, Hittable, Ray, lit};
+use raytrace::{Float, Ray, lit};
 use std::f64::consts::TAU;
 
 /// Parameters of a case, drawn in `f64` (see [`build`]).

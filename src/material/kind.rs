@@ -1,0 +1,105 @@
+//! [`MaterialKind`]: the enum fast path over the concrete materials.
+
+use super::{BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror, Scatter};
+use crate::float::Float;
+use crate::shape::Hit;
+use crate::vec3::Vec3;
+use rand::Rng;
+
+/// The enum fast path: every concrete material, dispatched by `match`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MaterialKind<F> {
+    /// A [`Mirror`].
+    Mirror(Mirror<F>),
+    /// A matte [`Lambertian`] surface.
+    Lambertian(Lambertian<F>),
+    /// A refracting [`Dielectric`] (glass).
+    Dielectric(Dielectric<F>),
+    /// A light-giving [`Emissive`] surface.
+    Emissive(Emissive<F>),
+}
+
+/// `match` on a [`MaterialKind`], the same call on every variant: no arm can be left out.
+macro_rules! each_material {
+    ($material:expr, $m:ident => $call:expr) => {
+        match $material {
+            MaterialKind::Mirror($m) => $call,
+            MaterialKind::Lambertian($m) => $call,
+            MaterialKind::Dielectric($m) => $call,
+            MaterialKind::Emissive($m) => $call,
+        }
+    };
+}
+
+// Dispatch always inlined: a call per light and per bounce otherwise, with the hit in
+// memory.
+impl<F: Float> Material<F> for MaterialKind<F> {
+    #[inline(always)]
+    fn lobes(&self) -> Lobes {
+        each_material!(self, m => m.lobes())
+    }
+    #[inline(always)]
+    fn reads_coordinates(&self) -> bool {
+        each_material!(self, m => m.reads_coordinates())
+    }
+    #[inline(always)]
+    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        each_material!(self, m => m.eval(hit, wo, wi))
+    }
+    #[inline(always)]
+    fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
+        each_material!(self, m => m.pdf(hit, wo, wi))
+    }
+    #[inline(always)]
+    fn emits(&self) -> Option<Emission<F>> {
+        each_material!(self, m => m.emits())
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for MaterialKind<F> {
+    #[inline(always)]
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+        each_material!(self, m => m.sample(hit, wo, rng))
+    }
+}
+
+impl<F> From<Mirror<F>> for MaterialKind<F> {
+    fn from(m: Mirror<F>) -> Self {
+        Self::Mirror(m)
+    }
+}
+
+impl<F> From<Lambertian<F>> for MaterialKind<F> {
+    fn from(m: Lambertian<F>) -> Self {
+        Self::Lambertian(m)
+    }
+}
+
+impl<F> From<Dielectric<F>> for MaterialKind<F> {
+    fn from(m: Dielectric<F>) -> Self {
+        Self::Dielectric(m)
+    }
+}
+
+impl<F> From<Emissive<F>> for MaterialKind<F> {
+    fn from(m: Emissive<F>) -> Self {
+        Self::Emissive(m)
+    }
+}
+
+impl<F: Float> MaterialKind<F> {
+    /// This material in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
+    pub fn cast<G: Float>(&self) -> crate::error::Result<MaterialKind<G>> {
+        Ok(match self {
+            Self::Mirror(m) => Mirror::new(m.albedo().cast())?.into(),
+            Self::Lambertian(m) => Lambertian::new(m.albedo().cast())?
+                .with_sampler(m.sampler())
+                .into(),
+            Self::Dielectric(m) => Dielectric::new(crate::float::to(m.refractive_index()))?
+                .with_albedo(m.albedo().cast())?
+                .with_reflectance(m.reflectance())
+                .into(),
+            Self::Emissive(m) => m.cast()?.into(),
+        })
+    }
+}
