@@ -36,6 +36,7 @@ mod camera;
 mod check;
 mod integer;
 mod location;
+mod make;
 mod model;
 mod transform;
 
@@ -168,3 +169,6 @@ pub fn advise_precision(file: &SceneFile) -> Result<Advice> {
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod field_tests;

@@ -15,6 +15,7 @@ fn error_at<T: std::fmt::Debug>(r: raytrace::Result<T>) -> (String, String) {
             path,
             location,
             message,
+            ..
         }) => {
             assert_eq!(path, Path::new("bad.toml"));
             (location, message)

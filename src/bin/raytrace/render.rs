@@ -4,6 +4,7 @@ use crate::Failure;
 use crate::args::{PrecisionArg, RenderArgs};
 use crate::output::{self, Target};
 use raytrace::advice::Precision;
+use raytrace::error::Field;
 use raytrace::image::{TileHeader, check_memory};
 use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
 use raytrace::{Camera, Error, Float, Rect, Render, Renderer, Result};
@@ -62,17 +63,19 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
     Ok(())
 }
 
-/// An error at a `[render]` field the command line set, as a usage error naming the option.
+/// An error about a value the command line set, as a usage error naming the option: the
+/// error's typed field says which value it was.
 fn blame_option(e: Error, args: &RenderArgs) -> Failure {
     if let Error::SceneFile {
-        location, message, ..
+        message,
+        field: Some(field),
+        ..
     } = &e
     {
-        let option = match location.as_str() {
-            "render.width" => args.width.map(|w| ("--width", w.to_string())),
-            "render.spp" => args.spp.map(|n| ("--spp", n.to_string())),
-            "render.max_depth" => args.max_depth.map(|d| ("--max-depth", d.to_string())),
-            "render.seed" => args.seed.map(|s| ("--seed", s.to_string())),
+        let option = match field {
+            Field::ImageWidth | Field::ImageSize => args.width.map(|w| ("--width", w.to_string())),
+            Field::SamplesPerPixel => args.spp.map(|n| ("--spp", n.to_string())),
+            Field::MaxDepth => args.max_depth.map(|d| ("--max-depth", d.to_string())),
             _ => None,
         };
         if let Some((option, value)) = option {
