@@ -7,6 +7,7 @@
 mod check;
 mod obj;
 mod ply;
+mod source;
 
 use crate::error::{Error, Result};
 use crate::vec3::Vec3;

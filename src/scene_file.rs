@@ -39,6 +39,8 @@ mod location;
 mod make;
 mod model;
 mod transform;
+mod triple;
+mod warnings;
 
 pub use build::{Built, Summary};
 pub use camera::FileCamera;
@@ -47,8 +49,9 @@ pub use model::{
     RenderOptions, Scale, Triple,
 };
 pub use transform::Placement;
+pub use warnings::Warning;
 
-use crate::advice::{Advice, advise};
+use crate::advice::{Advice, Reason, advise};
 use crate::error::{Error, Result};
 use crate::float::Float;
 use serde::{Deserialize, Serialize};
@@ -149,6 +152,24 @@ impl SceneFile {
     pub fn build<F: Float>(&self) -> Result<Built<F>> {
         build::build(self)
     }
+
+    /// What the file alone shows its author probably did not mean:
+    /// [`Warning::NoObjects`], [`Warning::NoLight`].
+    pub fn warnings(&self) -> Vec<Warning> {
+        warnings::static_warnings(self)
+    }
+
+    /// [`Warning::DarkPreview`] if a small render of `built` (this file's scene) is black
+    /// although something gives off light ([`SceneFile::warnings`] says when nothing does).
+    ///
+    /// # Errors
+    /// If the preview cannot be rendered (its camera refuses the file's values).
+    pub fn preview_warning<F: Float>(&self, built: &Built<F>) -> Result<Option<Warning>> {
+        if self.warnings().contains(&Warning::NoLight) {
+            return Ok(None);
+        }
+        Ok(warnings::dark_preview(self, built)?.then_some(Warning::DarkPreview))
+    }
 }
 
 /// The scalar `[render] precision = "auto"` resolves to: [`advise`] on the scene built in
@@ -156,15 +177,26 @@ impl SceneFile {
 /// [`SceneFile::ADVICE_SPP`] samples per pixel (the reference render is about ten times
 /// slower than `f64`), with the file's depth and seed. `Advice::recommended` is the answer.
 ///
+/// A scene only `f64` can hold (a radius of `1e-60`) is advised `f64`, and
+/// [`Reason::F32CannotHold`](crate::advice::Reason::F32CannotHold) names the file, the
+/// key and the value that `f32` loses.
+///
 /// # Errors
-/// As [`SceneFile::build`], and if the scene does not survive rounding to `f32`.
+/// As [`SceneFile::build`] in `f64`.
 pub fn advise_precision(file: &SceneFile) -> Result<Advice> {
     let mut small = file.clone();
     let render = small.render_mut();
     render.width = render.width.min(SceneFile::ADVICE_WIDTH);
     render.spp = render.spp.min(SceneFile::ADVICE_SPP);
     let built = small.build::<f64>()?;
-    advise(&built.scene, &built.camera, &built.settings)
+    let mut advice = advise(&built.scene, &built.camera, &built.settings)?;
+    if let Reason::F32CannotHold(why) = &mut advice.reason
+        && let Err(e) = small.build::<f32>()
+    {
+        // The file's own error names the key; the scene's cast could only name the value.
+        *why = e.to_string();
+    }
+    Ok(advice)
 }
 
 #[cfg(test)]

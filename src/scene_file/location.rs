@@ -141,7 +141,7 @@ fn culprit<'a, 'i, T: Deserialize<'i>>(
 /// An [`Error::SceneFile`] at the line and column where `span` starts, the field path
 /// `at` (if any) leading the message.
 fn error_at(file: &Path, text: &str, span: Option<Range<usize>>, message: &str, at: &[Step]) -> Error {
-    let message = message.trim_end().replace('\n', " ");
+    let message = plain(&message.trim_end().replace('\n', " "));
     let message = match path_text(at) {
         path if path.is_empty() => message,
         path => format!("{path}: {message}"),
@@ -159,6 +159,34 @@ fn error_at(file: &Path, text: &str, span: Option<Range<usize>>, message: &str, 
         message,
         field: None,
     }
+}
+
+/// The reader's words for what it expected, in the file's terms instead of the model's
+/// Rust types (`expected internally tagged enum MaterialSpec`, `expected u32`).
+fn plain(message: &str) -> String {
+    const WORDS: [(&str, &str); 10] = [
+        ("internally tagged enum CameraSpec", "a table with a `type` key"),
+        (
+            "internally tagged enum BackgroundSpec",
+            "a table with a `type` key",
+        ),
+        ("internally tagged enum MaterialSpec", "a table with a `type` key"),
+        ("internally tagged enum ObjectSpec", "a table with a `type` key"),
+        ("expected struct RenderOptions", "expected a table"),
+        ("expected struct LightSpec", "expected a table"),
+        ("expected variant identifier", "expected a string naming the type"),
+        (
+            "wanted string or table",
+            "expected a string naming one of the choices",
+        ),
+        ("expected u32", "expected an integer from 0 to 4294967295"),
+        ("expected f64", "expected a number"),
+    ];
+    let mut message = message.replace("expected a sequence", "expected an array");
+    for (rust, file) in WORDS {
+        message = message.replace(rust, file);
+    }
+    message
 }
 
 /// `objects[3].radius`, as [`KeyPath`] writes paths.

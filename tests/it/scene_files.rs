@@ -307,3 +307,17 @@ fn auto_precision_is_advised_on_the_files_scene() {
     // The spec's scene near the origin is within one 8-bit step in f64 at least.
     assert!(advice.f64.error.within_one_step(), "{advice:?}");
 }
+
+#[test]
+fn auto_precision_picks_f64_for_a_scene_only_f64_holds_and_names_the_key() {
+    let text = GOOD.replace("radius = 1.0\n", "radius = 1e-60\n");
+    let mut file = SceneFile::parse(&text, Path::new("tiny.toml")).unwrap();
+    file.render_mut().width = 16;
+    let advice = raytrace::scene_file::advise_precision(&file).expect("advice, not an error");
+    assert_eq!(advice.recommended, raytrace::advice::Precision::F64);
+    let why = advice.reason.to_string();
+    assert!(
+        why.contains("cannot be built in f32") && why.contains("tiny.toml: objects[3].radius"),
+        "{why}"
+    );
+}

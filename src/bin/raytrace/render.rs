@@ -115,6 +115,9 @@ fn override_settings(file: &mut SceneFile, args: &RenderArgs) -> Result<(), Fail
 /// image's size.
 fn render_in<F: Float>(file: &SceneFile, args: &RenderArgs) -> Result<(Render, (usize, usize))> {
     let built = file.build::<F>()?;
+    for w in file.warnings() {
+        eprintln!("warning: {}: {w}", file.path().display());
+    }
     if built.summary.skipped_degenerate > 0 {
         eprintln!(
             "note: skipped {} mesh faces without area",
@@ -141,11 +144,15 @@ fn tile_rect(args: &RenderArgs, width: usize, height: usize) -> Result<Rect> {
     }
 }
 
-/// The advice in a few words: each scalar's share of pixels off by more than one step.
+/// The advice in a few words: each scalar's share of pixels off by more than one step,
+/// or why f32 was not tried.
 fn summary(advice: &raytrace::advice::Advice) -> String {
-    format!(
-        "f32 {:.3} %, f64 {:.3} % of pixels more than one 8-bit step off",
-        100.0 * advice.f32.error.over_one_step,
-        100.0 * advice.f64.error.over_one_step
-    )
+    match &advice.f32 {
+        Some(f32) => format!(
+            "f32 {:.3} %, f64 {:.3} % of pixels more than one 8-bit step off",
+            100.0 * f32.error.over_one_step,
+            100.0 * advice.f64.error.over_one_step
+        ),
+        None => advice.reason.to_string(),
+    }
 }
