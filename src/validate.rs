@@ -9,9 +9,34 @@ use crate::error::{Error, Field, Result};
 use crate::float::Float;
 use crate::vec3::Vec3;
 
-/// `[x, y, z]`, each component as `Display` writes it (the way a scene file writes it).
+/// `[x, y, z]`, each component as [`number`] writes it.
 pub(crate) fn show<F: Float>(v: Vec3<F>) -> String {
-    format!("[{}, {}, {}]", v.x, v.y, v.z)
+    format!("[{}, {}, {}]", number(v.x), number(v.y), number(v.z))
+}
+
+/// `x` as `Display` writes it (the shortest form that reads back), but in scientific
+/// notation for magnitudes from 10¹⁶ or below 10⁻⁶: `1e39`, not forty digits; `1e-60`, not
+/// sixty zeros.
+pub(crate) fn number(x: impl std::fmt::Display) -> String {
+    let plain = x.to_string();
+    let body = plain.strip_prefix('-').unwrap_or(&plain);
+    if plain.len() <= 16 || !body.bytes().all(|b| b.is_ascii_digit() || b == b'.') {
+        return plain;
+    }
+    let sign = if body.len() < plain.len() { "-" } else { "" };
+    let (int, frac) = body.split_once('.').unwrap_or((body, ""));
+    let digits = format!("{int}{frac}");
+    let Some(first) = digits.find(|c| c != '0') else {
+        return plain;
+    };
+    let exponent = int.len() as i64 - 1 - first as i64;
+    if (-6..16).contains(&exponent) {
+        return plain;
+    }
+    let significant = digits[first..].trim_end_matches('0');
+    let (lead, rest) = significant.split_at(1);
+    let dot = if rest.is_empty() { "" } else { "." };
+    format!("{sign}{lead}{dot}{rest}e{exponent}")
 }
 
 /// The rules, each returning the value or why it is refused.
@@ -36,7 +61,7 @@ pub(crate) mod rule {
         } else if x > F::zero() {
             Ok(x)
         } else {
-            Err(format!("must be > 0 (got {x})"))
+            Err(format!("must be > 0 (got {})", super::number(x)))
         }
     }
 
@@ -105,4 +130,24 @@ pub(crate) fn image_size(width: usize, height: usize) -> Result<()> {
             ),
         )
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_numbers_are_written_in_scientific_notation() {
+        assert_eq!(number(1e39), "1e39");
+        assert_eq!(number(-1e-60), "-1e-60");
+        assert_eq!(number(1.2345678901234568e20), "1.2345678901234568e20");
+        assert_eq!(number(1e30f32), "1e30");
+        assert_eq!(number(0.5), "0.5");
+        assert_eq!(number(16.0 / 9.0), "1.7777777777777777");
+        assert_eq!(number(0.000_123_456_789_012_345_67), "0.00012345678901234567");
+        assert_eq!(number(-3.0), "-3");
+        assert_eq!(number(f64::NEG_INFINITY), "-inf");
+        assert_eq!(number(f64::NAN), "NaN");
+        assert_eq!(show(Vec3::new(1e39, 0.0, -3.0)), "[1e39, 0, -3]");
+    }
 }

@@ -62,7 +62,7 @@ impl<F: Float> LookAtCamera<F> {
         if !(vfov > F::zero() && vfov < lit(180.0)) {
             return Err(Error::invalid(
                 Field::CameraVfov,
-                format!("must be in (0, 180) degrees (got {vfov})"),
+                format!("must be in (0, 180) degrees (got {})", validate::number(vfov)),
             ));
         }
         let h = lit::<F>(2.0) * (vfov.to_radians() * lit(0.5)).tan();

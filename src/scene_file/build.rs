@@ -14,7 +14,7 @@ use crate::material::MaterialKind;
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
 use crate::shape::{Hittable, Mesh, ShapeKind};
-use crate::validate::{rule, show};
+use crate::validate::{number, rule, show};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -155,7 +155,8 @@ fn camera<F: Float>(root: &KeyPath, spec: &CameraSpec, width: usize) -> Result<F
             }) = &mut made
             {
                 message.push_str(&format!(
-                    ": the image is width × ⌊width / camera.aspect⌋ = {width} × ⌊{width}/{aspect}⌋"
+                    ": the image is width × ⌊width / camera.aspect⌋ = {width} × ⌊{width}/{}⌋",
+                    number(aspect)
                 ));
             }
             made
