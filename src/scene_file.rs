@@ -178,7 +178,7 @@ impl SceneFile {
 /// slower than `f64`), with the file's depth and seed. `Advice::recommended` is the answer.
 ///
 /// A scene only `f64` can hold (a radius of `1e-60`) is advised `f64`, and
-/// [`Reason::F32CannotHold`](crate::advice::Reason::F32CannotHold) names the file, the
+/// [`Reason::F32CannotHold`] names the file, the
 /// key and the value that `f32` loses.
 ///
 /// # Errors

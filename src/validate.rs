@@ -125,7 +125,7 @@ pub(crate) fn image_size(width: usize, height: usize) -> Result<()> {
         Error::invalid(
             Field::ImageSize,
             format!(
-                "must be at least 1×1 and at most {} pixels (got {width}×{height})",
+                "the image must have at least 1×1 and at most {} pixels (got {width}×{height})",
                 crate::image::MAX_PIXELS
             ),
         )

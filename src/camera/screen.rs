@@ -66,8 +66,8 @@ impl ScreenCamera {
             Err(Error::invalid(
                 Field::CameraEye,
                 format!(
-                    "every component must be finite (got [{}, {}, {}])",
-                    eye[0], eye[1], eye[2]
+                    "every component must be finite (got {})",
+                    crate::validate::show(Vec3::new(eye[0], eye[1], eye[2]))
                 ),
             ))
         }
