@@ -90,14 +90,50 @@ impl SceneFile {
     /// The most samples per pixel [`advise_precision`] renders.
     pub const ADVICE_SPP: u32 = 4;
 
-    /// Reads and parses the scene file at `path`.
+    /// The largest scene file read, in bytes (64 MiB: some hundred thousand objects; large
+    /// geometry belongs in mesh files).
+    pub const MAX_BYTES: u64 = 64 << 20;
+
+    /// Reads and parses the scene file at `path`: at most [`SceneFile::MAX_BYTES`] of UTF-8
+    /// text (a pipe such as `<(…)` too, so a link to `/dev/zero` stops at the bound).
     ///
     /// # Errors
-    /// [`Error::Io`] if it cannot be read; [`Error::SceneFile`] as [`SceneFile::parse`].
+    /// [`Error::Io`] if it cannot be read; [`Error::SceneFile`] for a file past the bound,
+    /// one that is not UTF-8 (at the line and column of the first byte that is not), or as
+    /// [`SceneFile::parse`].
     pub fn load(path: &Path) -> Result<SceneFile> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+        use std::io::Read;
+        let io = |source| Error::Io {
             path: path.to_path_buf(),
             source,
+        };
+        let mut bytes = Vec::new();
+        std::fs::File::open(path)
+            .and_then(|f| f.take(Self::MAX_BYTES + 1).read_to_end(&mut bytes))
+            .map_err(io)?;
+        let whole = |message: String| Error::SceneFile {
+            path: path.to_path_buf(),
+            location: "the whole file".into(),
+            message,
+            field: None,
+        };
+        if bytes.len() as u64 > Self::MAX_BYTES {
+            return Err(whole(format!(
+                "longer than {} bytes ({} MiB), the most a scene file may have",
+                Self::MAX_BYTES,
+                Self::MAX_BYTES >> 20
+            )));
+        }
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let good = e.utf8_error().valid_up_to();
+            let text = String::from_utf8_lossy(&e.as_bytes()[..good]);
+            let (line, column) = location::line_column(&text, good);
+            Error::SceneFile {
+                path: path.to_path_buf(),
+                location: format!("line {line}, column {column}"),
+                message: "not UTF-8 text: a scene file is TOML".into(),
+                field: None,
+            }
         })?;
         Self::parse(&text, path)
     }

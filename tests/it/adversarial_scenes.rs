@@ -162,6 +162,8 @@ fn cases() -> Vec<Case> {
         case("a number for a table", plus("[materials]\nx = 3"), 1, &["materials", "a table with a `type` key"]),
         case("unknown key", edit("radius = 1", "radius = 1\nradus = 2"), 1, &["line 12, column 1: objects[0]: unknown field `radus`"]),
         case("unknown choice", edit("width = 16", "width = 16\nprecision = \"f16\""), 1, &["render.precision", "`f16`"]),
+        case("endless scene", String::new(), 1, &["s.toml: the whole file: longer than"]).with(Extra::Link("s.toml", "/dev/zero")).check(),
+        case("scene not UTF-8", String::new(), 1, &["s.toml: line 2, column 6: not UTF-8"]).with(Extra::Bytes("s.toml", b"[render]\n# caf\xe9\n".to_vec())),
         case("broken TOML", edit("radius = 1", "radius = = 1"), 1, &["s.toml: line 11, column 10"]),
         // Rounding: only f64 holds a radius of 1e-60.
         case("tiny radius in f32", edit("width = 16", "width = 16\nprecision = \"f32\"").replace("radius = 1", "radius = 1e-60"), 1, &["objects[0].radius", "in f32", "f64"]),
@@ -247,7 +249,11 @@ fn run(dir: &Path, args: &[&str]) -> (Option<i32>, String) {
 fn place(dir: &Path, extra: &Extra) {
     match extra {
         Extra::Bytes(name, bytes) => fs::write(dir.join(name), bytes).unwrap(),
-        Extra::Link(name, target) => std::os::unix::fs::symlink(target, dir.join(name)).unwrap(),
+        Extra::Link(name, target) => {
+            // In place of the scene file too.
+            let _ = fs::remove_file(dir.join(name));
+            std::os::unix::fs::symlink(target, dir.join(name)).unwrap();
+        }
         Extra::Sparse(name, len) => fs::File::create(dir.join(name)).unwrap().set_len(*len).unwrap(),
         Extra::Folder(name) => fs::create_dir(dir.join(name)).unwrap(),
         Extra::Fifo(name) => {
