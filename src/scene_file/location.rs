@@ -162,7 +162,8 @@ fn error_at(file: &Path, text: &str, span: Option<Range<usize>>, message: &str, 
 }
 
 /// The reader's words for what it expected, in the file's terms instead of the model's
-/// Rust types (`expected internally tagged enum MaterialSpec`, `expected u32`).
+/// Rust types (`expected internally tagged enum MaterialSpec`, `expected u32`), and the
+/// value it quotes as short as the file would write it.
 fn plain(message: &str) -> String {
     const WORDS: [(&str, &str); 10] = [
         ("internally tagged enum CameraSpec", "a table with a `type` key"),
@@ -182,9 +183,22 @@ fn plain(message: &str) -> String {
         ("expected u32", "expected an integer from 0 to 4294967295"),
         ("expected f64", "expected a number"),
     ];
-    let mut message = message.replace("expected a sequence", "expected an array");
+    let mut message = message
+        .replace("expected a sequence", "expected an array")
+        .replace(
+            "expected string or map",
+            "expected a string naming one of the choices",
+        );
     for (rust, file) in WORDS {
         message = message.replace(rust, file);
+    }
+    // serde writes a float in full (`1000…0.0`, hundreds of digits); the file's way is shorter.
+    const FLOAT: &str = "floating point `";
+    if let Some(start) = message.find(FLOAT).map(|i| i + FLOAT.len())
+        && let Some(len) = message[start..].find('`')
+        && let Ok(x) = message[start..start + len].parse::<f64>()
+    {
+        message.replace_range(start..start + len, &crate::validate::number(x));
     }
     message
 }
