@@ -166,8 +166,9 @@ fn payload_error(source: &Source, header: &Header, element: &ElementDef, e: &Par
         return format!("element {name}: {why}");
     }
     if e.kind() == ErrorKind::UnexpectedEof {
+        let entries = if element.count == 1 { "entry" } else { "entries" };
         return format!(
-            "element {name}: the file ends before the {} entries its header declares",
+            "element {name}: the file ends before the {} {entries} its header declares",
             element.count
         );
     }
