@@ -23,14 +23,17 @@ pub enum Background<F> {
 impl<F: Float> Background<F> {
     /// A plain background; channels must be finite and `≥ 0`.
     pub fn solid(color: Color<F>) -> Result<Self> {
-        Ok(Self::Solid(validate::non_negative("background colour", color)?))
+        Ok(Self::Solid(validate::non_negative(
+            crate::error::Field::BackgroundColor,
+            color,
+        )?))
     }
 
     /// A sky gradient; channels must be finite and `≥ 0`.
     pub fn sky(horizon: Color<F>, zenith: Color<F>) -> Result<Self> {
         Ok(Self::Sky {
-            horizon: validate::non_negative("sky horizon colour", horizon)?,
-            zenith: validate::non_negative("sky zenith colour", zenith)?,
+            horizon: validate::non_negative(crate::error::Field::SkyHorizon, horizon)?,
+            zenith: validate::non_negative(crate::error::Field::SkyZenith, zenith)?,
         })
     }
 

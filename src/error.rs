@@ -1,5 +1,9 @@
 //! The crate's error type.
 
+mod field;
+
+pub use field::Field;
+
 use std::fmt;
 use std::path::PathBuf;
 
@@ -9,9 +13,9 @@ use std::path::PathBuf;
 pub enum Error {
     /// A scene value outside its domain (NaN, a radius ≤ 0, an albedo outside `[0, 1]`, …).
     InvalidValue {
-        /// What was being built, e.g. `"sphere radius"`.
-        what: &'static str,
-        /// Why the value was rejected, with the value itself.
+        /// The constructor's parameter that was rejected.
+        field: Field,
+        /// Why, with the value itself: `must be > 0 (got -1)`.
         reason: String,
     },
     /// Render settings that cannot work (zero samples, an image size the camera rejects, …).
@@ -33,6 +37,9 @@ pub enum Error {
         location: String,
         /// What is wrong there.
         message: String,
+        /// The library's field behind the error, when a constructor (or its check) refused
+        /// a value: how a caller tells which value it was without reading `location`.
+        field: Option<Field>,
     },
     /// A mesh file that cannot be loaded.
     Mesh {
@@ -50,10 +57,11 @@ pub enum Error {
 }
 
 impl Error {
-    /// An [`Error::InvalidValue`] for `what`.
-    pub fn invalid(what: &'static str, reason: impl Into<String>) -> Self {
+    /// An [`Error::InvalidValue`] for `field` (a [`Field`], or a user type's parameter by
+    /// its name).
+    pub fn invalid(field: impl Into<Field>, reason: impl Into<String>) -> Self {
         Self::InvalidValue {
-            what,
+            field: field.into(),
             reason: reason.into(),
         }
     }
@@ -62,7 +70,7 @@ impl Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::InvalidValue { what, reason } => write!(f, "invalid {what}: {reason}"),
+            Self::InvalidValue { field, reason } => write!(f, "invalid {field}: {reason}"),
             Self::InvalidSettings(reason) => write!(f, "invalid render settings: {reason}"),
             Self::Io { path, source } => write!(f, "{}: {source}", path.display()),
             Self::Ppm(reason) => write!(f, "malformed PPM: {reason}"),
@@ -70,6 +78,7 @@ impl fmt::Display for Error {
                 path,
                 location,
                 message,
+                ..
             } => write!(f, "{}: {location}: {message}", path.display()),
             Self::Mesh { path, message } => write!(f, "{}: {message}", path.display()),
             Self::Tiles(reason) => write!(f, "tiles: {reason}"),

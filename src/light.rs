@@ -28,8 +28,8 @@ impl<F: Float> PointLight<F> {
     /// A light; the position must be finite, the intensity finite and `≥ 0`.
     pub fn new(position: Vec3<F>, intensity: Color<F>) -> Result<Self> {
         Ok(Self {
-            position: validate::finite_vec("light position", position)?,
-            intensity: validate::non_negative("light intensity", intensity)?,
+            position: validate::finite_vec(crate::error::Field::LightPosition, position)?,
+            intensity: validate::non_negative(crate::error::Field::LightIntensity, intensity)?,
         })
     }
 

@@ -7,6 +7,9 @@
 mod check;
 mod obj;
 mod ply;
+mod source;
+
+pub use source::{MAX_LINE_BYTES, MAX_MESH_BYTES};
 
 use crate::error::{Error, Result};
 use crate::vec3::Vec3;
@@ -27,12 +30,18 @@ pub struct MeshData {
 /// Loads the mesh at `path`, choosing the format by its extension (`.obj` or `.ply`, in any
 /// case).
 ///
+/// Only a regular file of at most [`MAX_MESH_BYTES`] is read, never past the size it had
+/// when opened, and a text file's lines (OBJ, ASCII PLY, any PLY header) may have at most
+/// [`MAX_LINE_BYTES`]: a link to `/dev/zero` or a FIFO is refused before it is read, and a
+/// file of one endless line stops at the bound instead of filling memory.
+///
 /// # Errors
-/// [`Error::Mesh`], naming the file and the element, for a file that is missing, of another
-/// format, truncated or garbled, with an index out of range, or with a coordinate that is
-/// NaN or infinite, a face of fewer than three vertices, or no triangle with area. Vertices
-/// and faces are numbered as the format counts them: from 0 in PLY, from 1 (with the line)
-/// in OBJ.
+/// [`Error::Mesh`], naming the file and the element, for a file that is missing, not a
+/// regular file, too large, of another format, truncated or garbled, with a line past the
+/// bound, an index out of range, or with a coordinate that is NaN or infinite, a face of
+/// fewer than three vertices, or no triangle with area. Vertices and faces are numbered as
+/// the format counts them: from 0 in PLY, from 1 (with the line) in OBJ. The message never
+/// quotes the file.
 pub fn load(path: &Path) -> Result<MeshData> {
     let extension = path
         .extension()

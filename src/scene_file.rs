@@ -36,8 +36,11 @@ mod camera;
 mod check;
 mod integer;
 mod location;
+mod make;
 mod model;
 mod transform;
+mod triple;
+mod warnings;
 
 pub use build::{Built, Summary};
 pub use camera::FileCamera;
@@ -46,8 +49,9 @@ pub use model::{
     RenderOptions, Scale, Triple,
 };
 pub use transform::Placement;
+pub use warnings::Warning;
 
-use crate::advice::{Advice, advise};
+use crate::advice::{Advice, Reason, advise};
 use crate::error::{Error, Result};
 use crate::float::Float;
 use serde::{Deserialize, Serialize};
@@ -86,14 +90,50 @@ impl SceneFile {
     /// The most samples per pixel [`advise_precision`] renders.
     pub const ADVICE_SPP: u32 = 4;
 
-    /// Reads and parses the scene file at `path`.
+    /// The largest scene file read, in bytes (64 MiB: some hundred thousand objects; large
+    /// geometry belongs in mesh files).
+    pub const MAX_BYTES: u64 = 64 << 20;
+
+    /// Reads and parses the scene file at `path`: at most [`SceneFile::MAX_BYTES`] of UTF-8
+    /// text (a pipe such as `<(…)` too, so a link to `/dev/zero` stops at the bound).
     ///
     /// # Errors
-    /// [`Error::Io`] if it cannot be read; [`Error::SceneFile`] as [`SceneFile::parse`].
+    /// [`Error::Io`] if it cannot be read; [`Error::SceneFile`] for a file past the bound,
+    /// one that is not UTF-8 (at the line and column of the first byte that is not), or as
+    /// [`SceneFile::parse`].
     pub fn load(path: &Path) -> Result<SceneFile> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+        use std::io::Read;
+        let io = |source| Error::Io {
             path: path.to_path_buf(),
             source,
+        };
+        let mut bytes = Vec::new();
+        std::fs::File::open(path)
+            .and_then(|f| f.take(Self::MAX_BYTES + 1).read_to_end(&mut bytes))
+            .map_err(io)?;
+        let whole = |message: String| Error::SceneFile {
+            path: path.to_path_buf(),
+            location: "the whole file".into(),
+            message,
+            field: None,
+        };
+        if bytes.len() as u64 > Self::MAX_BYTES {
+            return Err(whole(format!(
+                "longer than {} bytes ({} MiB), the most a scene file may have",
+                Self::MAX_BYTES,
+                Self::MAX_BYTES >> 20
+            )));
+        }
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let good = e.utf8_error().valid_up_to();
+            let text = String::from_utf8_lossy(&e.as_bytes()[..good]);
+            let (line, column) = location::line_column(&text, good);
+            Error::SceneFile {
+                path: path.to_path_buf(),
+                location: format!("line {line}, column {column}"),
+                message: "not UTF-8 text: a scene file is TOML".into(),
+                field: None,
+            }
         })?;
         Self::parse(&text, path)
     }
@@ -148,6 +188,24 @@ impl SceneFile {
     pub fn build<F: Float>(&self) -> Result<Built<F>> {
         build::build(self)
     }
+
+    /// What the file alone shows its author probably did not mean:
+    /// [`Warning::NoObjects`], [`Warning::NoLight`].
+    pub fn warnings(&self) -> Vec<Warning> {
+        warnings::static_warnings(self)
+    }
+
+    /// [`Warning::DarkPreview`] if a small render of `built` (this file's scene) is black
+    /// although something gives off light ([`SceneFile::warnings`] says when nothing does).
+    ///
+    /// # Errors
+    /// If the preview cannot be rendered (its camera refuses the file's values).
+    pub fn preview_warning<F: Float>(&self, built: &Built<F>) -> Result<Option<Warning>> {
+        if self.warnings().contains(&Warning::NoLight) {
+            return Ok(None);
+        }
+        Ok(warnings::dark_preview(self, built)?.then_some(Warning::DarkPreview))
+    }
 }
 
 /// The scalar `[render] precision = "auto"` resolves to: [`advise`] on the scene built in
@@ -155,16 +213,30 @@ impl SceneFile {
 /// [`SceneFile::ADVICE_SPP`] samples per pixel (the reference render is about ten times
 /// slower than `f64`), with the file's depth and seed. `Advice::recommended` is the answer.
 ///
+/// A scene only `f64` can hold (a radius of `1e-60`) is advised `f64`, and
+/// [`Reason::F32CannotHold`] names the file, the
+/// key and the value that `f32` loses.
+///
 /// # Errors
-/// As [`SceneFile::build`], and if the scene does not survive rounding to `f32`.
+/// As [`SceneFile::build`] in `f64`.
 pub fn advise_precision(file: &SceneFile) -> Result<Advice> {
     let mut small = file.clone();
     let render = small.render_mut();
     render.width = render.width.min(SceneFile::ADVICE_WIDTH);
     render.spp = render.spp.min(SceneFile::ADVICE_SPP);
     let built = small.build::<f64>()?;
-    advise(&built.scene, &built.camera, &built.settings)
+    let mut advice = advise(&built.scene, &built.camera, &built.settings)?;
+    if let Reason::F32CannotHold(why) = &mut advice.reason
+        && let Err(e) = small.build::<f32>()
+    {
+        // The file's own error names the key; the scene's cast could only name the value.
+        *why = e.to_string();
+    }
+    Ok(advice)
 }
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod field_tests;

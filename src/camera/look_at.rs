@@ -1,7 +1,7 @@
 //! A pinhole camera placed anywhere, looking at a point.
 
 use super::Camera;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::float::{Float, lit};
 use crate::ray::Ray;
 use crate::validate;
@@ -40,26 +40,29 @@ impl<F: Float> LookAtCamera<F> {
         width: usize,
         height: usize,
     ) -> Result<Self> {
-        crate::image::check_size(width, height)?;
-        let from = validate::finite_vec("camera position", from)?;
-        let at = validate::finite_vec("camera target", at)?;
-        let w = validate::direction("camera view direction (from − at)", from - at)?;
-        let up = validate::direction("camera up vector", up)?;
+        validate::image_size(width, height)?;
+        let from = validate::finite_vec(Field::CameraFrom, from)?;
+        let at = validate::finite_vec(Field::CameraAt, at)?;
+        let w = validate::direction(Field::CameraView, from - at)?;
+        let up = validate::direction(Field::CameraUp, up)?;
         // Both unit: |up × w| is the sine of their angle, and below γ(6) the frame would be
         // built from rounding noise (the same relative test as a degenerate triangle).
         let side = up.cross(w);
         if side.length().partial_cmp(&F::gamma(6)) != Some(std::cmp::Ordering::Greater) {
             return Err(Error::invalid(
-                "camera up vector",
-                "must not be parallel to the view direction",
+                Field::CameraUp,
+                format!(
+                    "must not be parallel to the view direction (got {})",
+                    validate::show(up)
+                ),
             ));
         }
         let u = side.normalize();
         let v = w.cross(u);
         if !(vfov > F::zero() && vfov < lit(180.0)) {
             return Err(Error::invalid(
-                "camera field of view",
-                format!("must be in (0°, 180°), got {vfov}"),
+                Field::CameraVfov,
+                format!("must be in (0, 180) degrees (got {})", validate::number(vfov)),
             ));
         }
         let h = lit::<F>(2.0) * (vfov.to_radians() * lit(0.5)).tan();

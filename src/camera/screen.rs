@@ -1,7 +1,7 @@
 //! The specification's camera.
 
 use super::Camera;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::float::{Float, lit};
 use crate::ray::Ray;
 use crate::vec3::Vec3;
@@ -34,16 +34,19 @@ impl ScreenCamera {
     /// The spec's camera for an `width × height` image.
     ///
     /// # Errors
-    /// [`Error::InvalidSettings`] unless `width = 2·height` and `height ≥ 2` (one row
+    /// [`Error::InvalidValue`] ([`Field::ImageSize`]) unless `width = 2·height` and `height ≥ 2` (one row
     /// has no "outermost centres" to span 2 units between), or if the image would
-    /// have more than 2³² pixels.
+    /// have more than [`MAX_PIXELS`](crate::image::MAX_PIXELS) pixels.
     pub fn new(width: usize, height: usize) -> Result<Self> {
         if height < 2 || height.checked_mul(2) != Some(width) {
-            return Err(Error::InvalidSettings(format!(
-                "the spec's camera needs a 2:1 image at least 4×2 (width = 2·height), got {width}×{height}"
-            )));
+            return Err(Error::invalid(
+                Field::ImageSize,
+                format!(
+                    "the spec's camera needs a 2:1 image at least 4×2 (width = 2·height), got {width}×{height}"
+                ),
+            ));
         }
-        crate::image::check_size(width, height)?;
+        crate::validate::image_size(width, height)?;
         Ok(Self {
             width,
             height,
@@ -61,14 +64,27 @@ impl ScreenCamera {
             Ok(Self { eye, ..self })
         } else {
             Err(Error::invalid(
-                "camera eye",
-                format!("must be finite, got {eye:?}"),
+                Field::CameraEye,
+                format!(
+                    "every component must be finite (got {})",
+                    crate::validate::show(Vec3::new(eye[0], eye[1], eye[2]))
+                ),
             ))
         }
     }
 
     /// The spec's camera for an image `width` pixels wide (`height = width/2`).
+    ///
+    /// # Errors
+    /// [`Field::ImageWidth`] for an odd width or one below 4; [`Field::ImageSize`] past
+    /// [`MAX_PIXELS`](crate::image::MAX_PIXELS).
     pub fn with_width(width: usize) -> Result<Self> {
+        if width < 4 || !width.is_multiple_of(2) {
+            return Err(Error::invalid(
+                Field::ImageWidth,
+                format!("the spec's camera needs an even width of at least 4, for a 2:1 image (got {width})"),
+            ));
+        }
         Self::new(width, width / 2)
     }
 

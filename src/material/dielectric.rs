@@ -53,7 +53,7 @@ impl<F: Float> Dielectric<F> {
     /// e.g. the air inside a hollow glass sphere).
     pub fn new(refractive_index: F) -> Result<Self> {
         Ok(Self {
-            refractive_index: validate::positive("refractive index", refractive_index)?,
+            refractive_index: validate::positive(crate::error::Field::RefractiveIndex, refractive_index)?,
             albedo: Color::splat(F::one()),
             reflectance: Reflectance::Schlick,
         })
@@ -62,7 +62,7 @@ impl<F: Float> Dielectric<F> {
     /// The same material tinted by `albedo`; each channel must lie in `[0, 1]`.
     pub fn with_albedo(self, albedo: Color<F>) -> Result<Self> {
         Ok(Self {
-            albedo: validate::albedo("dielectric albedo", albedo)?,
+            albedo: validate::albedo(crate::error::Field::DielectricAlbedo, albedo)?,
             ..self
         })
     }

@@ -21,7 +21,7 @@ impl<F: Float> Emission<F> {
     /// Radiance `L_e` from the front face; each channel must be finite and `≥ 0`.
     pub fn new(radiance: Color<F>) -> Result<Self> {
         Ok(Self {
-            radiance: validate::non_negative("emitted radiance", radiance)?,
+            radiance: validate::non_negative(crate::error::Field::EmittedRadiance, radiance)?,
             two_sided: false,
         })
     }
@@ -102,7 +102,7 @@ impl<F: Float> Emissive<F> {
     /// `[0, 1]`.
     pub fn with_albedo(self, albedo: Color<F>) -> Result<Self> {
         Ok(Self {
-            albedo: validate::albedo("emissive albedo", albedo)?,
+            albedo: validate::albedo(crate::error::Field::EmissiveAlbedo, albedo)?,
             ..self
         })
     }

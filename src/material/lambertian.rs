@@ -37,7 +37,7 @@ impl<F: Float> Lambertian<F> {
     /// A matte surface with albedo `A`; each channel must lie in `[0, 1]`.
     pub fn new(albedo: Color<F>) -> Result<Self> {
         Ok(Self {
-            albedo: validate::albedo("matte albedo", albedo)?,
+            albedo: validate::albedo(crate::error::Field::MatteAlbedo, albedo)?,
             sampler: CosineSampler::TangentSphere,
         })
     }

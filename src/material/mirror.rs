@@ -21,7 +21,7 @@ impl<F: Float> Mirror<F> {
     /// A mirror with albedo `A`; each channel must lie in `[0, 1]`.
     pub fn new(albedo: Color<F>) -> Result<Self> {
         Ok(Self {
-            albedo: validate::albedo("mirror albedo", albedo)?,
+            albedo: validate::albedo(crate::error::Field::MirrorAlbedo, albedo)?,
         })
     }
 

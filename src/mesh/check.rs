@@ -71,6 +71,9 @@ impl fmt::Display for Problem {
             Self::TooFewVertices { face, count } => {
                 write!(f, "face {face}: {count} vertices (a face needs at least 3)")
             }
+            Self::NoTriangles { skipped: 0 } => {
+                f.write_str("no faces: the file holds no triangle or polygon of this format")
+            }
             Self::NoTriangles { skipped } => {
                 write!(f, "no triangles with area ({skipped} degenerate faces skipped)")
             }

@@ -1,15 +1,16 @@
 //! Reading Wavefront OBJ files with `tobj`.
 //!
-//! Only positions and faces are read: materials (`mtllib`) are ignored, so a missing `.mtl`
-//! file is no error. Every object and group of the file goes into one mesh. `l` lines count
+//! Only positions and faces are read: normals (`vn`), texture coordinates (`vt`) and
+//! materials (`mtllib`, `usemtl`) are dropped for now, so a missing `.mtl` file is no
+//! error. Every object and group of the file goes into one mesh. `l` lines count
 //! as faces, as `tobj` reads them.
 
 use super::MeshData;
 use super::check::{Problem, Triangulator, check_positions};
+use super::source::Source;
 use crate::error::{Error, Result};
 use crate::vec3::Vec3;
-use std::fs::File;
-use std::io::{BufRead, BufReader};
+use std::io::BufRead;
 use std::path::Path;
 
 /// Loads an OBJ mesh.
@@ -18,7 +19,7 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
         path: path.to_path_buf(),
         message,
     };
-    let file = File::open(path).map_err(|e| fail(format!("cannot open: {e}")))?;
+    let mut source = Source::open(path).map_err(fail)?;
     // Faces are kept whole (no `triangulate`) so that they can be checked and numbered as in
     // the file, then split into fans by the same code as PLY's.
     let options = tobj::LoadOptions {
@@ -28,11 +29,16 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
         ignore_lines: false,
     };
     let no_materials = |_: &Path| Ok(Default::default());
-    let (models, _) =
-        tobj::load_obj_buf(&mut BufReader::new(file), &options, no_materials).map_err(|e| match e {
-            tobj::LoadError::FaceVertexOutOfBounds => fail(locate(path, &e.to_string())),
-            _ => fail(format!("cannot parse: {e}")),
-        })?;
+    let (models, _) = tobj::load_obj_buf(&mut source, &options, no_materials).map_err(|e| match e {
+        tobj::LoadError::FaceVertexOutOfBounds => fail(locate(path, &e.to_string())),
+        // tobj reads line by line and stops at the line it cannot take: the source's line.
+        tobj::LoadError::ReadError => fail(
+            source
+                .overlong()
+                .unwrap_or_else(|| format!("line {}: cannot be read as text (UTF-8)", source.line())),
+        ),
+        _ => fail(format!("line {}: cannot parse ({e})", source.line())),
+    })?;
 
     // tobj keeps, per model, the vertices its faces use, in the order they are first used; the
     // models' vertices are put one after the other and their indices offset to match.
@@ -82,10 +88,10 @@ fn too_many() -> String {
 /// fewer than three vertices or a vertex index out of range, and describes it with its line
 /// number and the file's numbering (from 1, as OBJ indices count); `fallback` if none is found.
 fn locate(path: &Path, fallback: &str) -> String {
-    let Ok(file) = File::open(path) else {
+    let Ok(source) = Source::open(path) else {
         return fallback.to_owned();
     };
-    let lines: Vec<String> = BufReader::new(file).lines().map_while(|l| l.ok()).collect();
+    let lines: Vec<String> = source.lines().map_while(|l| l.ok()).collect();
     let vertices = lines
         .iter()
         .filter(|l| l.split_whitespace().next() == Some("v"))

@@ -7,13 +7,13 @@
 
 use super::MeshData;
 use super::check::{Problem, Triangulator, check_positions};
+use super::source::Source;
 use crate::error::{Error, Result};
 use crate::vec3::Vec3;
-use ply_rs_bw::parser::{Parser, Reader};
-use ply_rs_bw::ply::{ElementDef, Header, Property, PropertyAccess, PropertyAccessResult};
+use ply_rs_bw::parser::{ParseError, Parser, Reader};
+use ply_rs_bw::ply::{ElementDef, Encoding, Header, Property, PropertyAccess, PropertyAccessResult};
 use ply_rs_bw::ply::{PropertyType, ScalarType};
-use std::fs::File;
-use std::io::BufReader;
+use std::io::ErrorKind;
 use std::path::Path;
 
 /// The names a face's index list goes by (the second is older, and still common).
@@ -96,31 +96,33 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
         path: path.to_path_buf(),
         message,
     };
-    let file = File::open(path).map_err(|e| fail(format!("cannot open: {e}")))?;
-    let mut reader = Reader::new(BufReader::new(file));
+    let mut reader = Reader::new(Source::open(path).map_err(fail)?);
     let header = Parser::<Skipped>::new()
         .read_header(&mut reader)
-        .map_err(|e| fail(format!("bad PLY header: {e}")))?;
+        .map_err(|e| fail(header_error(reader.get_ref(), &e)))?;
     check_header(&header).map_err(fail)?;
+    if header.encoding != Encoding::Ascii {
+        reader.get_mut().binary();
+    }
 
     let (mut vertices, mut faces) = (Vec::new(), Vec::new());
     for element in header.elements.values() {
-        let what = |e| fail(format!("element {}: {e}", element.name));
+        let what = |e: ParseError, source: &Source| fail(payload_error(source, &header, element, &e));
         match element.name.as_str() {
             "vertex" => {
                 vertices = Parser::<Vertex>::new()
                     .read_payload_for_element(&mut reader, element, &header)
-                    .map_err(what)?;
+                    .map_err(|e| what(e, reader.get_ref()))?;
             }
             "face" => {
                 faces = Parser::<Face>::new()
                     .read_payload_for_element(&mut reader, element, &header)
-                    .map_err(what)?;
+                    .map_err(|e| what(e, reader.get_ref()))?;
             }
             _ => {
                 Parser::<Skipped>::new()
                     .read_payload_for_element(&mut reader, element, &header)
-                    .map_err(what)?;
+                    .map_err(|e| what(e, reader.get_ref()))?;
             }
         }
     }
@@ -138,6 +140,70 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
     mesh.finish().map_err(named)
 }
 
+/// Why the header could not be read, in words about the file that quote none of it (the
+/// parser's own messages quote the offending line).
+fn header_error(source: &Source, e: &ParseError) -> String {
+    if let Some(why) = source.overlong() {
+        return format!("bad PLY header: {why}");
+    }
+    let line = e.line().map_or(source.line(), |l| l as u64);
+    match e.kind() {
+        ErrorKind::UnexpectedEof => "bad PLY header: the file ends before `end_header`".into(),
+        ErrorKind::InvalidData => format!("bad PLY header: line {line} is not text (UTF-8)"),
+        _ if line <= 1 => "not a PLY file: the first line is not `ply`".into(),
+        _ => format!(
+            "bad PLY header: line {line} is not a header line (`format`, `element`, `property`, \
+             `comment`, `obj_info` or `end_header`), or the format line is missing or repeated"
+        ),
+    }
+}
+
+/// Why `element`'s data could not be read: at a line of an ASCII file, at a byte of a
+/// binary one; the file is not quoted.
+fn payload_error(source: &Source, header: &Header, element: &ElementDef, e: &ParseError) -> String {
+    let name = &element.name;
+    if let Some(why) = source.overlong() {
+        return format!("element {name}: {why}");
+    }
+    if e.kind() == ErrorKind::UnexpectedEof {
+        let entries = if element.count == 1 { "entry" } else { "entries" };
+        return format!(
+            "element {name}: the file ends before the {} {entries} its header declares",
+            element.count
+        );
+    }
+    match header.encoding {
+        Encoding::Ascii => format!(
+            "element {name}: line {} does not hold the entry the header declares \
+             (a number missing, malformed or out of its type's range)",
+            source.line()
+        ),
+        _ => format!(
+            "element {name}: malformed binary data before byte {} (a list longer than the file, \
+             or a property of an unsupported type)",
+            source.offset()
+        ),
+    }
+}
+
+/// A property's type as a PLY header writes it: `float`, `list uchar int`.
+fn type_name(t: &PropertyType) -> String {
+    let scalar = |s: &ScalarType| match s {
+        ScalarType::Char => "char",
+        ScalarType::UChar => "uchar",
+        ScalarType::Short => "short",
+        ScalarType::UShort => "ushort",
+        ScalarType::Int => "int",
+        ScalarType::UInt => "uint",
+        ScalarType::Float => "float",
+        ScalarType::Double => "double",
+    };
+    match t {
+        PropertyType::Scalar(s) => scalar(s).into(),
+        PropertyType::List(index, item) => format!("list {} {}", scalar(index), scalar(item)),
+    }
+}
+
 /// Checks that the header declares the vertex and face elements with properties of the
 /// types this reader takes, so that a wrong file fails with the reason rather than later.
 fn check_header(header: &Header) -> std::result::Result<(), String> {
@@ -153,7 +219,8 @@ fn check_header(header: &Header) -> std::result::Result<(), String> {
             Some(PropertyType::Scalar(ScalarType::Float | ScalarType::Double)) => {}
             Some(other) => {
                 return Err(format!(
-                    "element vertex: property {name} is {other:?}, not float or double"
+                    "element vertex: property {name} is {}, not float or double",
+                    type_name(other)
                 ));
             }
             None => return Err(format!("element vertex: no property {name}")),
@@ -167,8 +234,9 @@ fn check_header(header: &Header) -> std::result::Result<(), String> {
     match &list.data_type {
         PropertyType::List(_, item) if !matches!(item, ScalarType::Float | ScalarType::Double) => Ok(()),
         other => Err(format!(
-            "element face: property {} is {other:?}, not a list of integers",
-            list.name
+            "element face: property {} is {}, not a list of integers",
+            list.name,
+            type_name(other)
         )),
     }
 }

@@ -1,6 +1,6 @@
 //! Render settings.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 
 /// How to render: samples per pixel, recursion limit, seed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,18 +58,25 @@ impl RenderSettings {
     }
 
     /// Checks the settings (the fields are public, so the renderer checks again).
+    ///
+    /// # Errors
+    /// [`Error::InvalidValue`] at [`Field::SamplesPerPixel`] or [`Field::MaxDepth`].
     pub fn validate(&self) -> Result<()> {
         if self.samples_per_pixel == 0 {
-            return Err(Error::InvalidSettings(
-                "samples per pixel must be at least 1, got 0".into(),
+            return Err(Error::invalid(
+                Field::SamplesPerPixel,
+                "must be at least 1 (got 0)",
             ));
         }
         if self.max_depth > Self::MAX_DEPTH {
-            return Err(Error::InvalidSettings(format!(
-                "max depth must be at most {}, got {} (the recursion takes a stack frame per bounce)",
-                Self::MAX_DEPTH,
-                self.max_depth
-            )));
+            return Err(Error::invalid(
+                Field::MaxDepth,
+                format!(
+                    "must be at most {} (got {}): the recursion takes a stack frame per bounce",
+                    Self::MAX_DEPTH,
+                    self.max_depth
+                ),
+            ));
         }
         Ok(())
     }

@@ -1,21 +1,20 @@
 //! Building a scene file's scene, camera and settings, every value checked on the way.
 
+use super::SceneFile;
 use super::camera::FileCamera;
-use super::check::{self, blame, vec};
-use super::location::Field;
-use super::model::{BackgroundSpec, CameraSpec, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec};
+use super::check::{blame, checked, vec};
+use super::location::KeyPath;
+use super::make::{self, Solid};
+use super::model::{CameraSpec, ObjectSpec, Triple};
 use super::transform::Placement;
-use super::{RenderOptions, SceneFile};
 use crate::aabb::Aabb;
-use crate::background::Background;
-use crate::camera::{LookAtCamera, ScreenCamera};
-use crate::error::Result;
-use crate::float::{Float, lit};
-use crate::light::PointLight;
-use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, Reflectance};
+use crate::error::{Error, Field, Result};
+use crate::float::Float;
+use crate::material::MaterialKind;
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
-use crate::shape::{Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
+use crate::shape::{Hittable, Mesh, ShapeKind};
+use crate::validate::{number, rule, show};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -60,15 +59,26 @@ pub struct Summary {
 
 /// Builds `file` in scalar `F`.
 pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
-    let root = Field::root(file.path());
-    let settings = settings(&root.key("render"), file.render())?;
-    let camera = camera::<F>(&root, &file.camera, file.render().width)?;
-    let mut scene = EnumScene::new(background::<F>(&root.key("background"), &file.background)?);
-    scene.set_acceleration(file.render().acceleration);
+    let root = KeyPath::root(file.path());
+    let r = file.render();
+    let settings =
+        RenderSettings::new(r.spp, r.max_depth, r.seed).map_err(|e| blame(&root, &root.key("render"), e))?;
+    let camera = camera::<F>(&root, &file.camera, r.width)?;
+    let at = root.key("background");
+    let background = checked::<F, _>(
+        &root,
+        &at,
+        make::background::<f64>(&file.background),
+        make::background::<F>(&file.background),
+    )?;
+    let mut scene = EnumScene::new(background);
+    scene.set_acceleration(r.acceleration);
 
     let mut materials = BTreeMap::new();
     for (name, m) in &file.materials {
-        materials.insert(name.as_str(), material::<F>(&root.key("materials").key(name), m)?);
+        let at = root.key("materials").key(name);
+        let made = checked::<F, _>(&root, &at, make::material::<f64>(m), make::material::<F>(m))?;
+        materials.insert(name.as_str(), made);
     }
     let folder = file.path().parent().unwrap_or(Path::new(""));
     let mut summary = Summary::default();
@@ -79,10 +89,16 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
                 .key("material")
                 .error(unknown_material(object.material(), &materials)));
         };
-        add_object(&mut scene, &mut summary, &at, object, m, folder)?;
+        add_object(&mut scene, &mut summary, (&root, &at), object, m, folder)?;
     }
     for (i, light) in file.lights.iter().enumerate() {
-        scene.add_light(point_light(&root.key("lights").index(i), light)?);
+        let at = root.key("lights").index(i);
+        scene.add_light(checked::<F, _>(
+            &root,
+            &at,
+            make::light::<f64>(light),
+            make::light::<F>(light),
+        )?);
     }
     count(&scene, &mut summary);
     Ok(Built {
@@ -105,44 +121,15 @@ fn unknown_material(name: &str, known: &BTreeMap<&str, MaterialKind<impl Float>>
     }
 }
 
-fn settings(at: &Field, r: &RenderOptions) -> Result<RenderSettings> {
-    if r.width == 0 {
-        return Err(at.key("width").error("must be > 0 (got 0)"));
-    }
-    if r.spp == 0 {
-        return Err(at.key("spp").error("must be at least 1 (got 0)"));
-    }
-    if r.max_depth > RenderSettings::MAX_DEPTH {
-        return Err(at.key("max_depth").error(format!(
-            "must be at most {} (got {})",
-            RenderSettings::MAX_DEPTH,
-            r.max_depth
-        )));
-    }
-    RenderSettings::new(r.spp, r.max_depth, r.seed).map_err(|e| at.wrap(e))
-}
-
-fn camera<F: Float>(root: &Field, spec: &CameraSpec, width: usize) -> Result<FileCamera<F>> {
+fn camera<F: Float>(root: &KeyPath, spec: &CameraSpec, width: usize) -> Result<FileCamera<F>> {
     let at = root.key("camera");
-    let width_at = root.key("render").key("width");
     match *spec {
-        CameraSpec::Screen { eye } => {
-            if width < 4 || !width.is_multiple_of(2) {
-                return Err(width_at.error(format!(
-                    "the screen camera needs an even width of at least 4, for a 2:1 image (got {width})"
-                )));
-            }
-            let camera = ScreenCamera::with_width(width).map_err(|e| width_at.wrap(e))?;
-            Ok(FileCamera::Screen(match eye {
-                Some(eye) => {
-                    let eye_at = at.key("eye");
-                    camera
-                        .translated(check::finite(&eye_at, eye)?)
-                        .map_err(|e| eye_at.wrap(e))?
-                }
-                None => camera,
-            }))
-        }
+        CameraSpec::Screen { eye } => checked::<F, _>(
+            root,
+            &at,
+            make::screen::<f64>(width, eye),
+            make::screen::<F>(width, eye),
+        ),
         CameraSpec::LookAt {
             from,
             at: target,
@@ -150,35 +137,29 @@ fn camera<F: Float>(root: &Field, spec: &CameraSpec, width: usize) -> Result<Fil
             vfov,
             aspect,
         } => {
-            check::finite(&at.key("from"), from)?;
-            check::finite(&at.key("at"), target)?;
-            check::direction(&at.key("up"), up)?;
-            if !(vfov > 0.0 && vfov < 180.0) {
-                return Err(at
-                    .key("vfov")
-                    .error(format!("must be in (0, 180) degrees (got {vfov})")));
+            let aspect = rule::positive(aspect).map_err(|why| at.key("aspect").error(why))?;
+            let height = look_at_height(width, aspect);
+            // A height past usize saturates, and the camera refuses it as too many pixels.
+            let spec = make::LookAt {
+                from,
+                at: target,
+                up,
+                vfov,
+                size: (width, height as usize),
+            };
+            let mut made = checked::<F, _>(root, &at, make::look_at::<f64>(&spec), make::look_at::<F>(&spec));
+            if let Err(Error::SceneFile {
+                message,
+                field: Some(Field::ImageSize),
+                ..
+            }) = &mut made
+            {
+                message.push_str(&format!(
+                    ": the image is width × ⌊width / camera.aspect⌋ = {width} × ⌊{width}/{}⌋",
+                    number(aspect)
+                ));
             }
-            let height = look_at_height(width, check::positive(&at.key("aspect"), aspect)?);
-            if height < 1.0 {
-                return Err(at.key("aspect").error(format!(
-                    "makes the image less than one pixel high ({width}/{aspect})"
-                )));
-            }
-            let camera =
-                LookAtCamera::new(vec(from), vec(target), vec(up), lit(vfov), width, height as usize);
-            camera.map(FileCamera::LookAt).map_err(|e| {
-                blame::<F>(
-                    &at,
-                    e,
-                    &[
-                        ("camera position", "from"),
-                        ("camera target", "at"),
-                        ("camera view direction (from − at)", "at"),
-                        ("camera up vector", "up"),
-                        ("camera field of view", "vfov"),
-                    ],
-                )
-            })
+            made
         }
     }
 }
@@ -189,152 +170,84 @@ pub(super) fn look_at_height(width: usize, aspect: f64) -> f64 {
     (width as f64 / aspect * (1.0 + 1e-12)).floor()
 }
 
-fn background<F: Float>(at: &Field, spec: &BackgroundSpec) -> Result<Background<F>> {
-    let made = match *spec {
-        BackgroundSpec::Sky { horizon, zenith } => Background::sky(
-            vec(check::non_negative(&at.key("horizon"), horizon)?),
-            vec(check::non_negative(&at.key("zenith"), zenith)?),
-        ),
-        BackgroundSpec::Solid { color } => {
-            Background::solid(vec(check::non_negative(&at.key("color"), color)?))
-        }
-    };
-    made.map_err(|e| blame::<F>(at, e, &[]))
-}
-
-fn material<F: Float>(at: &Field, spec: &MaterialSpec) -> Result<MaterialKind<F>> {
-    let albedo_at = at.key("albedo");
-    let wrap = |e| {
-        blame::<F>(
-            at,
-            e,
-            &[("refractive index", "index"), ("emitted radiance", "radiance")],
-        )
-    };
-    Ok(match *spec {
-        MaterialSpec::Mirror { albedo } => Mirror::new(vec(check::albedo(&albedo_at, albedo)?))
-            .map_err(wrap)?
-            .into(),
-        MaterialSpec::Lambertian { albedo } => Lambertian::new(vec(check::albedo(&albedo_at, albedo)?))
-            .map_err(wrap)?
-            .into(),
-        MaterialSpec::Dielectric {
-            index,
-            albedo,
-            fresnel,
-        } => {
-            let mut glass = Dielectric::new(lit(check::positive(&at.key("index"), index)?)).map_err(wrap)?;
-            if let Some(albedo) = albedo {
-                glass = glass
-                    .with_albedo(vec(check::albedo(&albedo_at, albedo)?))
-                    .map_err(wrap)?;
-            }
-            glass
-                .with_reflectance(match fresnel {
-                    FresnelSpec::Schlick => Reflectance::Schlick,
-                    FresnelSpec::Exact => Reflectance::Fresnel,
-                })
-                .into()
-        }
-        MaterialSpec::Emissive {
-            radiance,
-            two_sided,
-            albedo,
-        } => {
-            let radiance = check::non_negative(&at.key("radiance"), radiance)?;
-            let mut light = Emissive::new(vec(radiance)).map_err(wrap)?.two_sided(two_sided);
-            if let Some(albedo) = albedo {
-                light = light
-                    .with_albedo(vec(check::albedo(&albedo_at, albedo)?))
-                    .map_err(wrap)?;
-            }
-            light.into()
-        }
-    })
-}
-
 fn add_object<F: Float>(
     scene: &mut EnumScene<F>,
     summary: &mut Summary,
-    at: &Field,
+    (root, at): (&KeyPath, &KeyPath),
     spec: &ObjectSpec,
     material: MaterialKind<F>,
     folder: &Path,
 ) -> Result<()> {
-    match spec {
-        ObjectSpec::Sphere { center, radius, .. } => {
-            let center = check::finite(&at.key("center"), *center)?;
-            let radius = check::positive(&at.key("radius"), *radius)?;
-            let sphere = Sphere::new(vec(center), lit(radius)).map_err(|e| {
-                blame::<F>(at, e, &[("sphere centre", "center"), ("sphere radius", "radius")])
-            })?;
-            scene.add(sphere, material);
-        }
-        ObjectSpec::Plane { point, normal, .. } => {
-            let point = check::finite(&at.key("point"), *point)?;
-            let normal = check::direction(&at.key("normal"), *normal)?;
-            let plane = Plane::new(vec(point), vec(normal))
-                .map_err(|e| blame::<F>(at, e, &[("plane point", "point"), ("plane normal", "normal")]))?;
-            scene.add(plane, material);
-        }
-        ObjectSpec::Triangle { a, b, c, .. } => {
-            let [a, b, c] = [("a", a), ("b", b), ("c", c)].map(|(k, v)| check::finite(&at.key(k), *v));
-            let triangle = Triangle::new(vec(a?), vec(b?), vec(c?)).map_err(|e| blame::<F>(at, e, &[]))?;
-            scene.add(triangle, material);
-        }
+    let solid = match *spec {
+        ObjectSpec::Sphere { center, radius, .. } => Solid::Sphere { center, radius },
+        ObjectSpec::Plane { point, normal, .. } => Solid::Plane { point, normal },
+        ObjectSpec::Triangle { a, b, c, .. } => Solid::Triangle { a, b, c },
         ObjectSpec::Mesh {
-            file,
+            ref file,
             scale,
             rotate,
             translate,
             ..
         } => {
-            let factors = check::finite(&at.key("scale"), scale.factors())?;
-            if factors.contains(&0.0) {
-                return Err(at.key("scale").error(format!(
-                    "every factor must be non-zero (got {})",
-                    check::show(factors)
-                )));
-            }
-            let placement = Placement::new(
-                factors,
-                check::finite(&at.key("rotate"), *rotate)?,
-                check::finite(&at.key("translate"), *translate)?,
-            );
-            let mesh = crate::mesh::load(&folder.join(file)).map_err(|e| at.key("file").wrap(e))?;
-            let mut vertices = Vec::with_capacity(mesh.positions.len());
-            for (k, &p) in mesh.positions.iter().enumerate() {
-                let placed = placement.apply(p);
-                let v = vec::<F>(placed.to_f64());
-                if !v.is_finite() {
-                    return Err(at.error(format!(
-                        "vertex {k} of the mesh is placed at {placed:?}, which is not finite in {}",
-                        F::NAME
-                    )));
-                }
-                vertices.push(v);
-            }
-            // Placement and rounding can flatten a face: the mesh leaves it out and counts it.
-            let shape = Mesh::new(vertices, mesh.triangles).map_err(|e| at.key("file").wrap(e))?;
-            summary.skipped_degenerate += shape.skipped_degenerate();
+            let placement = placement(at, scale.factors(), rotate, translate)?;
+            let shape = mesh::<F>(root, at, &folder.join(file), &placement, summary)?;
             scene.add(shape, material);
-            summary.meshes += 1;
-            summary.skipped_degenerate += mesh.skipped_degenerate;
+            return Ok(());
         }
-    }
+    };
+    let shape = checked::<F, _>(root, at, make::shape::<f64>(solid), make::shape::<F>(solid))?;
+    scene.add(shape, material);
     Ok(())
 }
 
-fn point_light<F: Float>(at: &Field, spec: &LightSpec) -> Result<PointLight<F>> {
-    let position = check::finite(&at.key("position"), spec.position)?;
-    let intensity = check::non_negative(&at.key("intensity"), spec.intensity)?;
-    PointLight::new(vec(position), vec(intensity)).map_err(|e| {
-        blame::<F>(
-            at,
-            e,
-            &[("light position", "position"), ("light intensity", "intensity")],
-        )
-    })
+/// A mesh's placement: every number finite, no scale factor zero.
+fn placement(at: &KeyPath, scale: Triple, rotate: Triple, translate: Triple) -> Result<Placement> {
+    let finite = |key: &str, t: Triple| {
+        rule::finite(vec::<f64>(t)).map_err(|why| at.key(key).error(why))?;
+        Ok::<_, Error>(t)
+    };
+    let factors = finite("scale", scale)?;
+    if factors.contains(&0.0) {
+        return Err(at.key("scale").error(format!(
+            "every factor must be non-zero (got {})",
+            show(vec::<f64>(factors))
+        )));
+    }
+    Ok(Placement::new(
+        factors,
+        finite("rotate", rotate)?,
+        finite("translate", translate)?,
+    ))
+}
+
+/// The mesh at `path`, placed and rounded to `F`; its skipped faces are counted in `summary`.
+fn mesh<F: Float>(
+    root: &KeyPath,
+    at: &KeyPath,
+    path: &Path,
+    placement: &Placement,
+    summary: &mut Summary,
+) -> Result<Mesh<F>> {
+    let mesh = crate::mesh::load(path).map_err(|e| at.key("file").wrap(e))?;
+    let mut vertices = Vec::with_capacity(mesh.positions.len());
+    for (k, &p) in mesh.positions.iter().enumerate() {
+        let placed = placement.apply(p);
+        let v = vec::<F>(placed.to_f64());
+        if !v.is_finite() {
+            return Err(at.error(format!(
+                "vertex {k} of the mesh lands at {} once scaled, rotated and translated, which is \
+                 not finite in {}",
+                show(placed),
+                F::NAME
+            )));
+        }
+        vertices.push(v);
+    }
+    // Placement and rounding can flatten a face: the mesh leaves it out and counts it.
+    let shape = Mesh::new(vertices, mesh.triangles).map_err(|e| blame(root, at, e))?;
+    summary.skipped_degenerate += shape.skipped_degenerate() + mesh.skipped_degenerate;
+    summary.meshes += 1;
+    Ok(shape)
 }
 
 /// Fills in the counts, the bounds and whether a BVH is used.

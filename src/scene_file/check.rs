@@ -1,85 +1,96 @@
-//! Value checks with messages in the file's terms: `must be > 0 (got -1)`.
+//! A library constructor's error at the key its field is written under.
 //!
-//! They run in `f64` on the values as written, before the library's constructors run in
-//! the render's scalar; a value that only fails after rounding is caught by
-//! [`blame`], which keeps the constructor's message.
+//! The values are checked by the constructors alone (`validate.rs`), once in `f64` on the
+//! numbers as written and once in the render's scalar: a refusal in `f64` is the value's
+//! fault, one only in the render's scalar is the rounding's, and the message says which.
+//! The error's [`Field`] picks the key, never its text.
 
-use super::location::Field;
+use super::location::KeyPath;
 use super::model::Triple;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::float::Float;
 use crate::vec3::Vec3;
-
-/// `[x, y, z]` as the file writes it.
-pub fn show(t: Triple) -> String {
-    format!("[{}, {}, {}]", t[0], t[1], t[2])
-}
 
 /// `t` in scalar `F`, each component rounded to nearest.
 pub fn vec<F: Float>(t: Triple) -> Vec3<F> {
     Vec3::from_f64(t[0], t[1], t[2])
 }
 
-/// `x` if it is finite and `> 0`.
-pub fn positive(at: &Field, x: f64) -> Result<f64> {
-    if !x.is_finite() {
-        Err(at.error(format!("must be a finite number > 0 (got {x})")))
-    } else if x > 0.0 {
-        Ok(x)
-    } else {
-        Err(at.error(format!("must be > 0 (got {x})")))
-    }
-}
-
-/// `t` if every component is finite.
-pub fn finite(at: &Field, t: Triple) -> Result<Triple> {
-    if t.iter().all(|c| c.is_finite()) {
-        Ok(t)
-    } else {
-        Err(at.error(format!("every component must be finite (got {})", show(t))))
-    }
-}
-
-/// `t` if it is finite and not zero (a direction).
-pub fn direction(at: &Field, t: Triple) -> Result<Triple> {
-    if finite(at, t)?.iter().any(|&c| c != 0.0) {
-        Ok(t)
-    } else {
-        Err(at.error(format!("must be a non-zero vector (got {})", show(t))))
-    }
-}
-
-/// `t` if every channel is in `[0, 1]`: an albedo (a surface reflects at most what it
-/// receives).
-pub fn albedo(at: &Field, t: Triple) -> Result<Triple> {
-    if t.iter().all(|c| (0.0..=1.0).contains(c)) {
-        Ok(t)
-    } else {
-        Err(at.error(format!("each channel must be in [0, 1] (got {})", show(t))))
-    }
-}
-
-/// `t` if every channel is finite and `≥ 0`: a colour or an intensity.
-pub fn non_negative(at: &Field, t: Triple) -> Result<Triple> {
-    if t.iter().all(|c| c.is_finite() && *c >= 0.0) {
-        Ok(t)
-    } else {
-        Err(at.error(format!("each channel must be finite and ≥ 0 (got {})", show(t))))
-    }
-}
-
-/// A library constructor's error in scalar `F` as an error at the field it concerns:
-/// `fields` maps the constructor's `what` to a key below `at`; anything else is put on
-/// `at` itself. The values passed the checks above, so this is a value that did not
-/// survive rounding to `F` (or a whole-object condition, such as a degenerate triangle).
-pub fn blame<F: Float>(at: &Field, e: Error, fields: &[(&str, &str)]) -> Error {
-    let target = match &e {
-        Error::InvalidValue { what, .. } => {
-            fields.iter().find(|(w, _)| w == what).map(|(_, key)| at.key(key))
+/// The key `field` is written under, when `entry` is the table being built
+/// (`objects[3]`, `materials.gold`, `camera`, …) and `root` the top of the file. Every
+/// field is named: a new one without its key does not compile.
+pub fn key<'a>(root: &KeyPath<'a>, entry: &KeyPath<'a>, field: Field) -> KeyPath<'a> {
+    let render = |name| root.key("render").key(name);
+    let own = |name| entry.key(name);
+    match field {
+        Field::SphereCenter => own("center"),
+        Field::SphereRadius => own("radius"),
+        Field::PlanePoint => own("point"),
+        Field::PlaneNormal => own("normal"),
+        Field::TriangleA => own("a"),
+        Field::TriangleB => own("b"),
+        Field::TriangleC => own("c"),
+        // No area: all three vertices together, so the entry.
+        Field::Triangle => entry.clone(),
+        Field::Mesh => own("file"),
+        Field::MirrorAlbedo | Field::MatteAlbedo | Field::DielectricAlbedo | Field::EmissiveAlbedo => {
+            own("albedo")
         }
-        _ => None,
-    };
-    target
-        .unwrap_or_else(|| at.clone())
-        .error(format!("{e} (in {})", F::NAME))
+        Field::RefractiveIndex => own("index"),
+        Field::EmittedRadiance => own("radiance"),
+        Field::LightPosition => own("position"),
+        Field::LightIntensity => own("intensity"),
+        Field::BackgroundColor => own("color"),
+        Field::SkyHorizon => own("horizon"),
+        Field::SkyZenith => own("zenith"),
+        Field::CameraFrom => own("from"),
+        // `from == at` gives no view direction: the target is the one to move.
+        Field::CameraAt | Field::CameraView => own("at"),
+        Field::CameraUp => own("up"),
+        Field::CameraVfov => own("vfov"),
+        Field::CameraEye => own("eye"),
+        // The camera makes the image's size from `[render] width`.
+        Field::ImageWidth | Field::ImageSize => render("width"),
+        Field::SamplesPerPixel => render("spp"),
+        Field::MaxDepth => render("max_depth"),
+        // No file builds a user's own type; were one to, its entry is the place.
+        Field::Custom(_) => entry.clone(),
+    }
+}
+
+/// A library error at the key of its field, with the constructor's reason; any other
+/// error at `entry`, with its whole message.
+pub fn blame(root: &KeyPath, entry: &KeyPath, e: Error) -> Error {
+    blame_with(root, entry, e, "")
+}
+
+fn blame_with(root: &KeyPath, entry: &KeyPath, e: Error, tail: &str) -> Error {
+    match e {
+        Error::InvalidValue { field, reason } => {
+            key(root, entry, field).error_about(Some(field), format!("{reason}{tail}"))
+        }
+        other => entry.error(format!("{other}{tail}")),
+    }
+}
+
+/// `rounded`, the value made in scalar `F`, or the error at its field's key. `exact` is
+/// the same value made in `f64` from the numbers as written: its error comes first, and
+/// an error only `rounded` has says that rounding to `F` lost the value.
+pub fn checked<F: Float, T>(
+    root: &KeyPath,
+    entry: &KeyPath,
+    exact: Result<impl Sized>,
+    rounded: Result<T>,
+) -> Result<T> {
+    if let Err(e) = exact {
+        return Err(blame(root, entry, e));
+    }
+    rounded.map_err(|e| {
+        let tail = format!(
+            " in {0}: the value as written is valid in f64, but not once rounded to {0} \
+             (precision = \"f64\" keeps it)",
+            F::NAME
+        );
+        blame_with(root, entry, e, &tail)
+    })
 }

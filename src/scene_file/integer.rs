@@ -16,7 +16,8 @@ pub fn serialize<S: Serializer, T: Copy + TryInto<u64>>(x: &T, s: S) -> Result<S
     }
 }
 
-/// Reads a non-negative integer, or a string of decimal digits, that fits in `T`.
+/// Reads a non-negative integer that fits in `T`: a TOML integer, or above `i64::MAX` a
+/// string of decimal digits.
 pub fn deserialize<'de, D: Deserializer<'de>, T: TryFrom<u64>>(d: D) -> Result<T, D::Error> {
     let wide = d.deserialize_any(Unsigned)?;
     T::try_from(wide).map_err(|_| de::Error::custom(format!("{wide} is too large")))
@@ -39,8 +40,19 @@ impl Visitor<'_> for Unsigned {
         Ok(v)
     }
 
+    // A string only for what a TOML integer cannot hold, so that `width = "12"` is
+    // refused as `spp = "12"` is.
     fn visit_str<E: de::Error>(self, v: &str) -> Result<u64, E> {
-        v.parse()
-            .map_err(|_| E::custom(format!("expected a non-negative integer, got the string {v:?}")))
+        match v.parse::<u64>() {
+            Ok(wide) if i64::try_from(wide).is_err() => Ok(wide),
+            Ok(_) => Err(E::custom(format!(
+                "expected an integer, got the string {v:?} (write it without quotes; a string \
+                 of digits is only for values above {})",
+                i64::MAX
+            ))),
+            Err(_) => Err(E::custom(format!(
+                "expected a non-negative integer, got the string {v:?}"
+            ))),
+        }
     }
 }

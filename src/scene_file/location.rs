@@ -1,7 +1,7 @@
 //! Where in a scene file something is wrong: TOML errors as line and column, value
 //! errors as the path of the field.
 
-use crate::error::Error;
+use crate::error::{Error, Field};
 use serde::Deserialize;
 use serde_path_to_error::Segment;
 use std::ops::Range;
@@ -141,7 +141,7 @@ fn culprit<'a, 'i, T: Deserialize<'i>>(
 /// An [`Error::SceneFile`] at the line and column where `span` starts, the field path
 /// `at` (if any) leading the message.
 fn error_at(file: &Path, text: &str, span: Option<Range<usize>>, message: &str, at: &[Step]) -> Error {
-    let message = message.trim_end().replace('\n', " ");
+    let message = plain(&message.trim_end().replace('\n', " "));
     let message = match path_text(at) {
         path if path.is_empty() => message,
         path => format!("{path}: {message}"),
@@ -157,10 +157,53 @@ fn error_at(file: &Path, text: &str, span: Option<Range<usize>>, message: &str, 
         path: file.to_path_buf(),
         location,
         message,
+        field: None,
     }
 }
 
-/// `objects[3].radius`, as [`Field`] writes paths.
+/// The reader's words for what it expected, in the file's terms instead of the model's
+/// Rust types (`expected internally tagged enum MaterialSpec`, `expected u32`), and the
+/// value it quotes as short as the file would write it.
+fn plain(message: &str) -> String {
+    const WORDS: [(&str, &str); 10] = [
+        ("internally tagged enum CameraSpec", "a table with a `type` key"),
+        (
+            "internally tagged enum BackgroundSpec",
+            "a table with a `type` key",
+        ),
+        ("internally tagged enum MaterialSpec", "a table with a `type` key"),
+        ("internally tagged enum ObjectSpec", "a table with a `type` key"),
+        ("expected struct RenderOptions", "expected a table"),
+        ("expected struct LightSpec", "expected a table"),
+        ("expected variant identifier", "expected a string naming the type"),
+        (
+            "wanted string or table",
+            "expected a string naming one of the choices",
+        ),
+        ("expected u32", "expected an integer from 0 to 4294967295"),
+        ("expected f64", "expected a number"),
+    ];
+    let mut message = message
+        .replace("expected a sequence", "expected an array")
+        .replace(
+            "expected string or map",
+            "expected a string naming one of the choices",
+        );
+    for (rust, file) in WORDS {
+        message = message.replace(rust, file);
+    }
+    // serde writes a float in full (`1000…0.0`, hundreds of digits); the file's way is shorter.
+    const FLOAT: &str = "floating point `";
+    if let Some(start) = message.find(FLOAT).map(|i| i + FLOAT.len())
+        && let Some(len) = message[start..].find('`')
+        && let Ok(x) = message[start..start + len].parse::<f64>()
+    {
+        message.replace_range(start..start + len, &crate::validate::number(x));
+    }
+    message
+}
+
+/// `objects[3].radius`, as [`KeyPath`] writes paths.
 fn path_text(at: &[Step]) -> String {
     let mut text = String::new();
     for step in at {
@@ -176,14 +219,14 @@ fn path_text(at: &[Step]) -> String {
     text
 }
 
-/// A field path such as `objects[3].radius`, built up as the builder walks the file.
+/// A key's path such as `objects[3].radius`, built up as the builder walks the file.
 #[derive(Clone, Debug)]
-pub struct Field<'a> {
+pub struct KeyPath<'a> {
     file: &'a Path,
     path: String,
 }
 
-impl<'a> Field<'a> {
+impl<'a> KeyPath<'a> {
     /// The top of the file.
     pub fn root(file: &'a Path) -> Self {
         Self {
@@ -192,7 +235,7 @@ impl<'a> Field<'a> {
         }
     }
 
-    /// The key `name` below this field.
+    /// The key `name` below this one.
     pub fn key(&self, name: &str) -> Self {
         let path = if self.path.is_empty() {
             name.to_string()
@@ -205,7 +248,7 @@ impl<'a> Field<'a> {
         }
     }
 
-    /// Entry `i` of the array at this field.
+    /// Entry `i` of the array at this key.
     pub fn index(&self, i: usize) -> Self {
         Self {
             file: self.file,
@@ -213,17 +256,23 @@ impl<'a> Field<'a> {
         }
     }
 
-    /// An [`Error::SceneFile`] at this field.
+    /// An [`Error::SceneFile`] at this key.
     pub fn error(&self, message: impl Into<String>) -> Error {
+        self.error_about(None, message)
+    }
+
+    /// An [`Error::SceneFile`] at this key, about the library's `field` if there is one.
+    pub fn error_about(&self, field: Option<Field>, message: impl Into<String>) -> Error {
         Error::SceneFile {
             path: self.file.to_path_buf(),
             location: self.path.clone(),
             message: message.into(),
+            field,
         }
     }
 
-    /// A library error (a constructor's [`Error::InvalidValue`], a mesh that cannot be
-    /// loaded) as an [`Error::SceneFile`] at this field, keeping its message.
+    /// A library error (a mesh that cannot be loaded) as an [`Error::SceneFile`] at this
+    /// key, keeping its message.
     pub fn wrap(&self, e: Error) -> Error {
         self.error(e.to_string())
     }
@@ -249,7 +298,7 @@ mod tests {
     #[test]
     fn field_paths_read_like_the_file() {
         let p = Path::new("s.toml");
-        let f = Field::root(p).key("objects").index(3).key("radius");
+        let f = KeyPath::root(p).key("objects").index(3).key("radius");
         let Error::SceneFile { location, .. } = f.error("x") else {
             panic!()
         };

@@ -76,17 +76,23 @@ pub enum CameraSpec {
     /// at a 4×2 screen at distance 1; the image is `width × width/2`.
     Screen {
         /// Where the eye is moved to (the screen moves with it).
-        #[serde(default, skip_serializing_if = "Option::is_none")]
+        #[serde(
+            deserialize_with = "super::triple::some",
+            default,
+            skip_serializing_if = "Option::is_none"
+        )]
         eye: Option<Triple>,
     },
     /// A pinhole camera at `from` looking at `at`.
     LookAt {
         /// The eye.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         from: Triple,
         /// The point seen at the centre of the image.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         at: Triple,
         /// Roughly up (default `[0, 1, 0]`).
-        #[serde(default = "y_up")]
+        #[serde(deserialize_with = "super::triple::deserialize", default = "y_up")]
         up: Triple,
         /// The vertical field of view in degrees, in `(0, 180)`.
         vfov: f64,
@@ -112,15 +118,16 @@ pub enum BackgroundSpec {
     /// A gradient from `horizon` (straight down) to `zenith` (straight up).
     Sky {
         /// The colour straight down (default white).
-        #[serde(default = "white")]
+        #[serde(deserialize_with = "super::triple::deserialize", default = "white")]
         horizon: Triple,
         /// The colour straight up (default `[0.5, 0.7, 1.0]`).
-        #[serde(default = "sky_blue")]
+        #[serde(deserialize_with = "super::triple::deserialize", default = "sky_blue")]
         zenith: Triple,
     },
     /// One colour in every direction.
     Solid {
         /// The colour.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         color: Triple,
     },
 }
@@ -150,11 +157,13 @@ pub enum MaterialSpec {
     /// A perfect mirror.
     Mirror {
         /// Each channel in `[0, 1]`.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         albedo: Triple,
     },
     /// A matte surface.
     Lambertian {
         /// Each channel in `[0, 1]`.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         albedo: Triple,
     },
     /// Glass-like: reflects or refracts.
@@ -162,7 +171,11 @@ pub enum MaterialSpec {
         /// The refractive index relative to the outside, `> 0`.
         index: f64,
         /// The tint, each channel in `[0, 1]` (default white: clear).
-        #[serde(default, skip_serializing_if = "Option::is_none")]
+        #[serde(
+            deserialize_with = "super::triple::some",
+            default,
+            skip_serializing_if = "Option::is_none"
+        )]
         albedo: Option<Triple>,
         /// How the reflectance is computed.
         #[serde(default)]
@@ -171,12 +184,17 @@ pub enum MaterialSpec {
     /// A surface that gives off light (an area light), and may also reflect as a matte one.
     Emissive {
         /// The emitted radiance per channel, finite and `≥ 0`.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         radiance: Triple,
         /// Whether the back face emits too (default: the front face only).
         #[serde(default, skip_serializing_if = "std::ops::Not::not")]
         two_sided: bool,
         /// The matte albedo, each channel in `[0, 1]` (default black: it reflects nothing).
-        #[serde(default, skip_serializing_if = "Option::is_none")]
+        #[serde(
+            deserialize_with = "super::triple::some",
+            default,
+            skip_serializing_if = "Option::is_none"
+        )]
         albedo: Option<Triple>,
     },
 }
@@ -199,6 +217,7 @@ pub enum ObjectSpec {
     /// A sphere.
     Sphere {
         /// The centre.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         center: Triple,
         /// The radius, `> 0`.
         radius: f64,
@@ -208,8 +227,10 @@ pub enum ObjectSpec {
     /// An infinite plane.
     Plane {
         /// A point on the plane.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         point: Triple,
         /// The normal (any non-zero length), pointing to the front face.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         normal: Triple,
         /// The material's name.
         material: String,
@@ -217,10 +238,13 @@ pub enum ObjectSpec {
     /// A triangle, front face where `a → b → c` runs counter-clockwise.
     Triangle {
         /// The first vertex.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         a: Triple,
         /// The second vertex.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         b: Triple,
         /// The third vertex.
+        #[serde(deserialize_with = "super::triple::deserialize")]
         c: Triple,
         /// The material's name.
         material: String,
@@ -233,10 +257,10 @@ pub enum ObjectSpec {
         #[serde(default)]
         scale: Scale,
         /// Degrees about x, then y, then z.
-        #[serde(default)]
+        #[serde(deserialize_with = "super::triple::deserialize", default)]
         rotate: Triple,
         /// Added last.
-        #[serde(default)]
+        #[serde(deserialize_with = "super::triple::deserialize", default)]
         translate: Triple,
         /// The material's name.
         material: String,
@@ -262,7 +286,7 @@ pub enum Scale {
     /// The same factor on every axis.
     Uniform(f64),
     /// A factor per axis.
-    PerAxis(Triple),
+    PerAxis(#[serde(deserialize_with = "super::triple::deserialize")] Triple),
 }
 
 impl Default for Scale {
@@ -286,7 +310,9 @@ impl Scale {
 #[serde(deny_unknown_fields)]
 pub struct LightSpec {
     /// Where it is.
+    #[serde(deserialize_with = "super::triple::deserialize")]
     pub position: Triple,
     /// Its radiant intensity per channel, `≥ 0`.
+    #[serde(deserialize_with = "super::triple::deserialize")]
     pub intensity: Triple,
 }

@@ -37,7 +37,7 @@ fn errors_inside_entries_point_at_the_entry_and_key() {
         at(parse(&text)),
         (
             "line 14, column 10".into(),
-            "objects[1].radius: invalid type: string \"big\", expected f64".into()
+            "objects[1].radius: invalid type: string \"big\", expected a number".into()
         )
     );
     let text = text.replace("radius = \"big\"", "radus = 2");
@@ -136,4 +136,36 @@ fn a_mesh_error_keeps_its_message_under_the_file_field() {
         message.contains("missing.stl") && message.contains(".obj or .ply"),
         "{message}"
     );
+}
+
+#[test]
+fn warnings_say_what_a_valid_file_probably_did_not_mean() {
+    let empty = parse("").unwrap();
+    assert_eq!(empty.warnings(), [Warning::NoObjects]);
+    let dark = format!("[background]\ntype = \"solid\"\ncolor = [0, 0, 0]\n{SPHERE}");
+    assert_eq!(parse(&dark).unwrap().warnings(), [Warning::NoLight]);
+    let lit = format!("{dark}[[lights]]\nposition = [0, 2, 0]\nintensity = [1, 1, 1]\n");
+    assert_eq!(parse(&lit).unwrap().warnings(), []);
+    assert_eq!(parse(SPHERE).unwrap().warnings(), [], "the default sky lights it");
+}
+
+#[test]
+fn a_panel_facing_away_is_a_dark_preview() {
+    // A one-sided emissive triangle at z = −3; `a → b → c` counter-clockwise seen from
+    // the camera faces it, clockwise faces away.
+    let panel = |b: &str, c: &str| {
+        format!(
+            "[background]\ntype = \"solid\"\ncolor = [0, 0, 0]\n[materials.e]\ntype = \"emissive\"\n\
+             radiance = [1, 1, 1]\n[[objects]]\ntype = \"triangle\"\na = [-1, -1, -3]\nb = {b}\nc = {c}\n\
+             material = \"e\"\n"
+        )
+    };
+    let toward = parse(&panel("[1, -1, -3]", "[-1, 1, -3]")).unwrap();
+    let away = parse(&panel("[-1, 1, -3]", "[1, -1, -3]")).unwrap();
+    assert_eq!(toward.warnings(), []);
+    assert_eq!(away.warnings(), []);
+    let built = toward.build::<f64>().unwrap();
+    assert_eq!(toward.preview_warning(&built).unwrap(), None);
+    let built = away.build::<f64>().unwrap();
+    assert_eq!(away.preview_warning(&built).unwrap(), Some(Warning::DarkPreview));
 }

@@ -4,7 +4,7 @@ use super::sample::{sample_triangle, triangle_area};
 use super::triangle::{checked_normal, coordinates, intersect_vertices, record, unit_normal, vertex_bounds};
 use super::{Coordinates, Hit, Hittable, Intersection, SurfaceSample, hit_solid_angle};
 use crate::aabb::Aabb;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::float::{Float, lit};
 use crate::ray::Ray;
 use crate::vec3::Vec3;
@@ -71,30 +71,33 @@ impl<F: Float> Mesh<F> {
     /// to `F` can flatten a thin face, which a file's author cannot have meant as an error.
     ///
     /// # Errors
-    /// [`Error::InvalidValue`] (`what = "mesh"`), naming the element, for a vertex that is
+    /// [`Error::InvalidValue`] (`Field::Mesh`), naming the element, for a vertex that is
     /// not finite, an index past the vertices, more than `u32::MAX` triangles, or no
     /// triangle left with area.
     pub fn new(vertices: Vec<Vec3<F>>, mut triangles: Vec<[u32; 3]>) -> Result<Self> {
         if let Some(k) = vertices.iter().position(|v| !v.is_finite()) {
-            let v = vertices[k];
-            return Err(Error::invalid("mesh", format!("vertex {k} is not finite: {v:?}")));
+            let v = crate::validate::show(vertices[k]);
+            return Err(Error::invalid(
+                Field::Mesh,
+                format!("vertex {k} is not finite: {v}"),
+            ));
         }
         if let Some(k) = triangles
             .iter()
             .position(|t| t.iter().any(|&i| i as usize >= vertices.len()))
         {
+            let [a, b, c] = triangles[k];
             return Err(Error::invalid(
-                "mesh",
+                Field::Mesh,
                 format!(
-                    "triangle {k} indexes a vertex past the {} vertices: {:?}",
-                    vertices.len(),
-                    triangles[k]
+                    "triangle {k} indexes a vertex past the {} vertices: [{a}, {b}, {c}]",
+                    vertices.len()
                 ),
             ));
         }
         if u32::try_from(triangles.len()).is_err() {
             return Err(Error::invalid(
-                "mesh",
+                Field::Mesh,
                 format!("{} triangles; at most u32::MAX", triangles.len()),
             ));
         }
@@ -105,7 +108,7 @@ impl<F: Float> Mesh<F> {
         });
         if triangles.is_empty() {
             return Err(Error::invalid(
-                "mesh",
+                Field::Mesh,
                 format!("none of its {before} triangles has an area in {}", F::NAME),
             ));
         }

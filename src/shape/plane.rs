@@ -31,8 +31,8 @@ impl<F: Float> Plane<F> {
     /// [`Error::InvalidValue`](crate::Error::InvalidValue).
     pub fn new(point: Vec3<F>, normal: Vec3<F>) -> Result<Self> {
         Ok(Self {
-            point: validate::finite_vec("plane point", point)?,
-            normal: validate::direction("plane normal", normal)?,
+            point: validate::finite_vec(crate::error::Field::PlanePoint, point)?,
+            normal: validate::direction(crate::error::Field::PlaneNormal, normal)?,
         })
     }
 

@@ -23,8 +23,8 @@ impl<F: Float> Sphere<F> {
     /// A sphere; rejects a non-finite centre and a radius that is not finite and `> 0`.
     pub fn new(center: Vec3<F>, radius: F) -> Result<Self> {
         Ok(Self {
-            center: validate::finite_vec("sphere centre", center)?,
-            radius: validate::positive("sphere radius", radius)?,
+            center: validate::finite_vec(crate::error::Field::SphereCenter, center)?,
+            radius: validate::positive(crate::error::Field::SphereRadius, radius)?,
         })
     }
 

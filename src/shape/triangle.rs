@@ -29,8 +29,8 @@ pub struct Triangle<F> {
 impl<F: Float> Triangle<F> {
     /// The triangle `ABC`.
     ///
-    /// Rejects with [`Error::InvalidValue`] (`what = "triangle"`) non-finite vertices and
-    /// degenerate triangles: those with `|(B − A)×(C − A)| ≤ γ(6)·|B − A|·|C − A|`, that is
+    /// Rejects with [`Error::InvalidValue`] non-finite vertices (`Field::TriangleA`, `B`, `C`)
+    /// and (`Field::Triangle`) degenerate triangles: those with `|(B − A)×(C − A)| ≤ γ(6)·|B − A|·|C − A|`, that is
     /// whose angle at `A` has a sine within `γ(6)` of zero (`3.6·10⁻⁷` in f32,
     /// `6.7·10⁻¹⁶` in f64), which includes collinear and coincident vertices.
     ///
@@ -43,17 +43,25 @@ impl<F: Float> Triangle<F> {
     /// (it is scale-free), so neither very long nor very short edges overflow it; an edge
     /// that is not finite (`B − A` overflowing) is rejected.
     pub fn new(a: Vec3<F>, b: Vec3<F>, c: Vec3<F>) -> Result<Self> {
-        for v in [a, b, c] {
-            validate::finite_vec("triangle", v)?;
+        use crate::error::Field;
+        for (field, v) in [
+            (Field::TriangleA, a),
+            (Field::TriangleB, b),
+            (Field::TriangleC, c),
+        ] {
+            validate::finite_vec(field, v)?;
         }
         match unit_normal(a, b, c) {
             Ok(_) => Ok(Self { a, b, c }),
-            Err((cross_len, threshold)) => Err(Error::invalid(
-                "triangle",
+            Err(_) => Err(Error::invalid(
+                Field::Triangle,
                 format!(
-                    "degenerate in {} (|(B − A)×(C − A)| ≤ γ(6)·|B − A|·|C − A| for the scaled edges: \
-                     {cross_len:?} ≤ {threshold:?}), or an edge is not finite: {a:?}, {b:?}, {c:?}",
-                    F::NAME
+                    "has no area in {}: its vertices {}, {}, {} are collinear or coincident \
+                     (to within rounding), or an edge is too long to be finite",
+                    F::NAME,
+                    validate::show(a),
+                    validate::show(b),
+                    validate::show(c)
                 ),
             )),
         }

@@ -2,7 +2,7 @@
 //! double-double reference, f64 where f32 visibly fails (a scene far from the origin).
 
 use raytrace::LookAtCamera;
-use raytrace::advice::{Precision, advise};
+use raytrace::advice::{Precision, Reason, advise};
 use raytrace::prelude::*;
 
 /// Mirror spheres on a mirror floor, everything moved by `offset` along each axis.
@@ -30,7 +30,7 @@ fn f32_is_advised_near_the_origin() {
     let advice = advise(&mirrors(0.0), &camera, &RenderSettings::default()).unwrap();
     assert_eq!(advice.recommended, Precision::F32, "{advice:?}");
     assert!(
-        advice.f64.error.within_one_step() && advice.f32.error.within_one_step(),
+        advice.f64.error.within_one_step() && advice.f32.expect("rendered in f32").error.within_one_step(),
         "{advice:?}"
     );
 }
@@ -61,4 +61,21 @@ fn f64_is_advised_far_from_the_origin() {
             .recommended,
         Precision::F64
     );
+}
+
+#[test]
+fn f64_is_advised_when_only_f64_holds_the_scene() {
+    let mut scene = mirrors(0.0);
+    scene.add(
+        Sphere::new(Vec3::new(0.0, 0.0, -2.0), 1e-60).unwrap(),
+        Mirror::new(Vec3::splat(0.5)).unwrap(),
+    );
+    let camera = ScreenCamera::new(16, 8).unwrap();
+    let advice = advise(&scene, &camera, &RenderSettings::default()).expect("advice, not an error");
+    assert_eq!(advice.recommended, Precision::F64, "{advice:?}");
+    assert_eq!(advice.f32, None);
+    let Reason::F32CannotHold(why) = &advice.reason else {
+        panic!("{advice:?}")
+    };
+    assert!(why.contains("sphere radius"), "{why}");
 }

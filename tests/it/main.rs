@@ -14,6 +14,7 @@ mod parts;
 #[path = "../../examples/scenes/mod.rs"]
 mod scenes;
 
+mod adversarial_scenes;
 mod advice;
 mod bad_input;
 mod bvh_scene;

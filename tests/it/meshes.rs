@@ -242,7 +242,7 @@ fn bad_files_are_errors_naming_the_file_and_the_element() {
         (dir.file("empty.ply", ""), "bad PLY header"),
         (
             dir.file("garbled.ply", SQUARE_PLY.replace("0.5 0.25", "0.5 zero")),
-            "element vertex: Line",
+            "element vertex: line 19 does not hold the entry",
         ),
         (
             dir.file("garbled.obj", "v 0 0 0\nv 1 banana 0\n"),
@@ -261,7 +261,7 @@ fn bad_files_are_errors_naming_the_file_and_the_element() {
                 "intx.ply",
                 SQUARE_PLY.replace("property float y", "property int y"),
             ),
-            "element vertex: property y is Scalar(Int), not float or double",
+            "element vertex: property y is int, not float or double",
         ),
     ];
     let little = square_ply_little_endian(SQUARE_VERTICES);
@@ -277,6 +277,61 @@ fn bad_files_are_errors_naming_the_file_and_the_element() {
     for (path, expected) in cases {
         let message = mesh_error(&path);
         assert!(message.contains(expected), "{}: {message}", path.display());
+    }
+}
+
+#[test]
+fn messages_never_quote_the_file_nor_the_parsers_internals() {
+    let dir = Scratch::new("quiet");
+    // As `/etc/shadow` begins, behind a `.ply` name.
+    let secret = "root:*:19000:0:99999:7:::\ndaemon:*:19000:0:99999:7:::\n";
+    let cases = [
+        dir.file("shadow.ply", secret),
+        dir.file("shadow.obj", secret),
+        dir.file("late.ply", format!("ply\nformat ascii 1.0\n{secret}")),
+        dir.file("comment.ply", format!("comment {secret}")),
+        dir.file("garbled.ply", SQUARE_PLY.replace("0.5 0.25", "0.5 root:*:19000")),
+        dir.file("garbled.obj", format!("{SQUARE_OBJ}v 1 root:*:19000 0\n")),
+    ];
+    for path in cases {
+        let message = mesh_error(&path);
+        for leak in [
+            "root",
+            "daemon",
+            "19000",
+            "ParseError",
+            "LineCol",
+            "String:",
+            "\n",
+        ] {
+            assert!(
+                !message.contains(leak),
+                "{}: {leak:?} in {message}",
+                path.display()
+            );
+        }
+    }
+}
+
+#[test]
+fn a_file_that_never_ends_is_refused_before_it_is_read() {
+    let dir = Scratch::new("endless");
+    for name in ["zero.obj", "zero.ply"] {
+        let link = dir.0.join(name);
+        std::os::unix::fs::symlink("/dev/zero", &link).unwrap();
+        let message = mesh_error(&link);
+        assert!(message.contains("a mesh must be a regular file"), "{message}");
+    }
+    // A regular file of one line of a megabyte and more (sparse, so no disk is used).
+    for name in ["long.obj", "long.ply"] {
+        let path = dir.0.join(name);
+        let file = std::fs::File::create(&path).unwrap();
+        file.set_len(3 << 20).unwrap();
+        let message = mesh_error(&path);
+        assert!(
+            message.contains("line 1 is longer than 1048576 bytes"),
+            "{message}"
+        );
     }
 }
 

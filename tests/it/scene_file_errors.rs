@@ -15,6 +15,7 @@ fn error_at<T: std::fmt::Debug>(r: raytrace::Result<T>) -> (String, String) {
             path,
             location,
             message,
+            ..
         }) => {
             assert_eq!(path, Path::new("bad.toml"));
             (location, message)
@@ -78,21 +79,21 @@ fn every_section_names_the_field_of_a_wrong_type_at_its_value() {
         wrong(look_at),
         (
             "line 4, column 8".into(),
-            "camera.vfov: invalid type: string \"wide\", expected f64".into()
+            "camera.vfov: invalid type: string \"wide\", expected a number".into()
         )
     );
     assert_eq!(
         wrong("[background]\ntype = \"solid\"\ncolor = \"red\"\n"),
         (
             "line 3, column 9".into(),
-            "background.color: invalid type: string \"red\", expected an array of length 3".into()
+            "background.color: invalid type: string \"red\", expected an array of three numbers".into()
         )
     );
     assert_eq!(
         wrong("[materials.m]\ntype = \"mirror\"\nalbedo = \"grey\"\n"),
         (
             "line 3, column 10".into(),
-            "materials.m.albedo: invalid type: string \"grey\", expected an array of length 3".into()
+            "materials.m.albedo: invalid type: string \"grey\", expected an array of three numbers".into()
         )
     );
     let sphere = "[[objects]]\ntype = \"sphere\"\nradius = 1\ncenter = [0, 0, \"far\"]\nmaterial = \"m\"\n";
@@ -100,7 +101,7 @@ fn every_section_names_the_field_of_a_wrong_type_at_its_value() {
         wrong(sphere),
         (
             "line 4, column 10".into(),
-            "objects[0].center: invalid type: string \"far\", expected f64".into()
+            "objects[0].center: invalid type: string \"far\", expected a number".into()
         )
     );
     // In an inline table, and in the second of two entries that fail the same way.
@@ -120,7 +121,7 @@ fn every_section_names_the_field_of_a_wrong_type_at_its_value() {
         wrong("[[lights]]\nposition = [0, 1, \"up\"]\nintensity = [1, 1, 1]\n"),
         (
             "line 2, column 19".into(),
-            "lights[0].position[2]: invalid type: string \"up\", expected f64".into()
+            "lights[0].position[2]: invalid type: string \"up\", expected a number".into()
         )
     );
     // A tag or a choice that does not exist, a mesh's scale that is neither form.
@@ -220,4 +221,75 @@ fn a_mesh_error_is_passed_through_with_the_file_field() {
     let (location, message) = error_at(file.build::<f64>());
     assert_eq!(location, "objects[5].file");
     assert!(message.contains("bunny.obj"), "{message}");
+}
+
+#[test]
+fn messages_speak_of_the_file_not_of_rust_types() {
+    let cases = [
+        "render = 3\n",
+        "[render]\nspp = \"many\"\n",
+        "[render]\nmax_depth = 1.5\n",
+        "[render]\nprecision = 3\n",
+        "camera = 3\n",
+        "[camera]\ntype = 3\n",
+        "background = \"sky\"\n",
+        "[materials]\nm = 3\n",
+        "objects = [1]\n",
+        "objects = 1\n",
+        "lights = [1]\n",
+        "[[lights]]\nposition = [0, 0, \"a\"]\nintensity = [1, 1, 1]\n",
+    ];
+    for text in cases {
+        let (location, message) = wrong(text);
+        assert!(location.starts_with("line "), "{text}: {location}");
+        for rust in [
+            "internally tagged",
+            "Spec",
+            "struct",
+            "RenderOptions",
+            "u32",
+            "f64",
+            "variant identifier",
+            "wanted",
+            "sequence",
+        ] {
+            assert!(!message.contains(rust), "{text}: {rust:?} in {message}");
+        }
+    }
+}
+
+#[test]
+fn a_point_is_three_numbers_exactly() {
+    for (key, text) in [
+        (
+            "lights[0].position",
+            "[[lights]]\nposition = [0, 1, 2, 3]\nintensity = [1, 1, 1]\n",
+        ),
+        ("camera.eye", "[camera]\ntype = \"screen\"\neye = [0, 0, 0, 0]\n"),
+        (
+            "materials.m.albedo",
+            "[materials.m]\ntype = \"mirror\"\nalbedo = [1, 1, 1, 1]\n",
+        ),
+    ] {
+        let (location, message) = wrong(text);
+        assert!(location.starts_with("line "), "{location}");
+        assert!(
+            message.starts_with(&format!(
+                "{key}: invalid length 4, expected an array of three numbers"
+            )),
+            "{message}"
+        );
+    }
+}
+
+#[test]
+fn a_width_in_quotes_is_refused_as_spp_in_quotes_is() {
+    for key in ["width", "spp", "max_depth", "seed"] {
+        let (location, message) = wrong(&format!("[render]\n{key} = \"12\"\n"));
+        assert_eq!(location, format!("line 2, column {}", key.len() + 4));
+        assert!(message.starts_with(&format!("render.{key}: ")), "{message}");
+    }
+    // A seed beyond a TOML integer is still a string of digits.
+    let file = parse("[render]\nseed = \"18446744073709551615\"\n").unwrap();
+    assert_eq!(file.render().seed, u64::MAX);
 }

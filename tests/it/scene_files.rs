@@ -288,9 +288,34 @@ fn the_format_documents_example_parses() {
         (file.objects.len(), file.materials.len(), file.lights.len()),
         (4, 3, 1)
     );
-    // It builds with a mesh in place of the bunny (fetched, not committed): the committed
-    // tetrahedron, beside a file in tests/data/.
-    let example = example.replace("meshes/bunny.obj", "meshes/tetrahedron.obj");
+    // Saved in scenes/, as the page says, it names the file the fetch script writes.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let script = include_str!("../../tools/fetch_meshes.sh");
+    assert!(script.contains("dest=assets/meshes\n") && script.contains("\"$dest/bunny.obj\""));
+    let ObjectSpec::Mesh { file: mesh, .. } = &file.objects[3] else {
+        panic!("the example's fourth object is the bunny")
+    };
+    let resolved = Path::new("scenes")
+        .join(mesh)
+        .components()
+        .fold(PathBuf::new(), |mut path, part| {
+            match part {
+                std::path::Component::ParentDir => {
+                    path.pop();
+                }
+                part => path.push(part),
+            }
+            path
+        });
+    assert_eq!(resolved, Path::new("assets/meshes/bunny.obj"), "{mesh}");
+    let bunny = root.join("scenes").join(mesh);
+    // With the bunny fetched it builds as written; without, with the committed
+    // tetrahedron in its place, beside a file in tests/data/.
+    if bunny.exists() {
+        let file = SceneFile::parse(example, &root.join("scenes/example.toml")).unwrap();
+        assert_eq!(file.build::<f32>().unwrap().summary.meshes, 1);
+    }
+    let example = example.replace("../assets/meshes/bunny.obj", "meshes/tetrahedron.obj");
     let file = SceneFile::parse(&example, Path::new("tests/data/example.toml")).unwrap();
     let summary = file.build::<f32>().unwrap().summary;
     assert_eq!(
@@ -306,4 +331,18 @@ fn auto_precision_is_advised_on_the_files_scene() {
     let advice = raytrace::scene_file::advise_precision(&file).unwrap();
     // The spec's scene near the origin is within one 8-bit step in f64 at least.
     assert!(advice.f64.error.within_one_step(), "{advice:?}");
+}
+
+#[test]
+fn auto_precision_picks_f64_for_a_scene_only_f64_holds_and_names_the_key() {
+    let text = GOOD.replace("radius = 1.0\n", "radius = 1e-60\n");
+    let mut file = SceneFile::parse(&text, Path::new("tiny.toml")).unwrap();
+    file.render_mut().width = 16;
+    let advice = raytrace::scene_file::advise_precision(&file).expect("advice, not an error");
+    assert_eq!(advice.recommended, raytrace::advice::Precision::F64);
+    let why = advice.reason.to_string();
+    assert!(
+        why.contains("cannot be built in f32") && why.contains("tiny.toml: objects[3].radius"),
+        "{why}"
+    );
 }

@@ -5,10 +5,26 @@ use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
 use raytrace::{Camera, Result};
 use std::path::Path;
 
-/// Validates the scene (every value, every mesh) and prints what it holds.
+/// Validates the scene (every value, every mesh, in the scalar it renders in) and prints
+/// what it holds and what it probably does not mean. Everything is checked before
+/// "valid" is printed.
 pub fn check(path: &Path) -> Result<()> {
     let file = SceneFile::load(path)?;
     let built = file.build::<f64>()?;
+    let precision = match file.render().precision {
+        FilePrecision::F32 => {
+            file.build::<f32>()?;
+            "f32".to_string()
+        }
+        FilePrecision::F64 => "f64".to_string(),
+        FilePrecision::Auto => {
+            let advice = advise_precision(&file)?;
+            format!("auto, measured: {} ({})", advice.recommended, advice.reason)
+        }
+    };
+    let mut warnings = file.warnings();
+    warnings.extend(file.preview_warning(&built)?);
+
     let s = &built.summary;
     let r = file.render();
     println!("{}: valid", path.display());
@@ -48,13 +64,9 @@ pub fn check(path: &Path) -> Result<()> {
         "  render: {}×{} pixels, {} spp, max depth {}, seed {}",
         image.0, image.1, r.spp, r.max_depth, r.seed
     );
-    match r.precision {
-        FilePrecision::F32 => println!("  precision: f32"),
-        FilePrecision::F64 => println!("  precision: f64"),
-        FilePrecision::Auto => {
-            let advice = advise_precision(&file)?;
-            println!("  precision: auto, measured: {}", advice.recommended);
-        }
+    println!("  precision: {precision}");
+    for w in warnings {
+        eprintln!("warning: {}: {w}", path.display());
     }
     Ok(())
 }
@@ -74,16 +86,16 @@ fn point(p: raytrace::Vec3<f64>) -> String {
 
 fn print(path: &Path, a: &Advice) {
     println!("{}: against a double-double reference render", path.display());
-    for (name, t) in [("f32", &a.f32), ("f64", &a.f64)] {
-        println!(
-            "  {name}: RMSE {:.2e}, {:.3} % of pixels more than one 8-bit step off, {:.3} s",
-            t.error.rmse,
-            100.0 * t.error.over_one_step,
-            t.time.as_secs_f64()
-        );
+    for (name, t) in [("f32", a.f32.as_ref()), ("f64", Some(&a.f64))] {
+        match t {
+            Some(t) => println!(
+                "  {name}: RMSE {:.2e}, {:.3} % of pixels more than one 8-bit step off, {:.3} s",
+                t.error.rmse,
+                100.0 * t.error.over_one_step,
+                t.time.as_secs_f64()
+            ),
+            None => println!("  {name}: not rendered"),
+        }
     }
-    println!(
-        "  advice: {} (the cheapest within one step on 99 % of the pixels)",
-        a.recommended
-    );
+    println!("  advice: {} ({})", a.recommended, a.reason);
 }

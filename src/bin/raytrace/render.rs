@@ -4,6 +4,7 @@ use crate::Failure;
 use crate::args::{PrecisionArg, RenderArgs};
 use crate::output::{self, Target};
 use raytrace::advice::Precision;
+use raytrace::error::Field;
 use raytrace::image::{TileHeader, check_memory};
 use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
 use raytrace::{Camera, Error, Float, Rect, Render, Renderer, Result};
@@ -62,17 +63,19 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
     Ok(())
 }
 
-/// An error at a `[render]` field the command line set, as a usage error naming the option.
+/// An error about a value the command line set, as a usage error naming the option: the
+/// error's typed field says which value it was.
 fn blame_option(e: Error, args: &RenderArgs) -> Failure {
     if let Error::SceneFile {
-        location, message, ..
+        message,
+        field: Some(field),
+        ..
     } = &e
     {
-        let option = match location.as_str() {
-            "render.width" => args.width.map(|w| ("--width", w.to_string())),
-            "render.spp" => args.spp.map(|n| ("--spp", n.to_string())),
-            "render.max_depth" => args.max_depth.map(|d| ("--max-depth", d.to_string())),
-            "render.seed" => args.seed.map(|s| ("--seed", s.to_string())),
+        let option = match field {
+            Field::ImageWidth | Field::ImageSize => args.width.map(|w| ("--width", w.to_string())),
+            Field::SamplesPerPixel => args.spp.map(|n| ("--spp", n.to_string())),
+            Field::MaxDepth => args.max_depth.map(|d| ("--max-depth", d.to_string())),
             _ => None,
         };
         if let Some((option, value)) = option {
@@ -112,6 +115,9 @@ fn override_settings(file: &mut SceneFile, args: &RenderArgs) -> Result<(), Fail
 /// image's size.
 fn render_in<F: Float>(file: &SceneFile, args: &RenderArgs) -> Result<(Render, (usize, usize))> {
     let built = file.build::<F>()?;
+    for w in file.warnings() {
+        eprintln!("warning: {}: {w}", file.path().display());
+    }
     if built.summary.skipped_degenerate > 0 {
         eprintln!(
             "note: skipped {} mesh faces without area",
@@ -138,11 +144,15 @@ fn tile_rect(args: &RenderArgs, width: usize, height: usize) -> Result<Rect> {
     }
 }
 
-/// The advice in a few words: each scalar's share of pixels off by more than one step.
+/// The advice in a few words: each scalar's share of pixels off by more than one step,
+/// or why f32 was not tried.
 fn summary(advice: &raytrace::advice::Advice) -> String {
-    format!(
-        "f32 {:.3} %, f64 {:.3} % of pixels more than one 8-bit step off",
-        100.0 * advice.f32.error.over_one_step,
-        100.0 * advice.f64.error.over_one_step
-    )
+    match &advice.f32 {
+        Some(f32) => format!(
+            "f32 {:.3} %, f64 {:.3} % of pixels more than one 8-bit step off",
+            100.0 * f32.error.over_one_step,
+            100.0 * advice.f64.error.over_one_step
+        ),
+        None => advice.reason.to_string(),
+    }
 }

@@ -2,6 +2,7 @@
 
 use super::scene::*;
 use raytrace::Image;
+use raytrace::error::Field;
 use raytrace::prelude::*;
 
 #[test]
@@ -16,14 +17,14 @@ fn invalid_values_are_rejected_with_typed_errors() {
         assert!(matches!(
             Mirror::new(a),
             Err(Error::InvalidValue {
-                what: "mirror albedo",
+                field: Field::MirrorAlbedo,
                 ..
             })
         ));
         assert!(matches!(
             Lambertian::new(a),
             Err(Error::InvalidValue {
-                what: "matte albedo",
+                field: Field::MatteAlbedo,
                 ..
             })
         ));
@@ -31,7 +32,7 @@ fn invalid_values_are_rejected_with_typed_errors() {
     assert!(matches!(
         Sphere::new(v, -1.0),
         Err(Error::InvalidValue {
-            what: "sphere radius",
+            field: Field::SphereRadius,
             ..
         })
     ));
@@ -44,9 +45,18 @@ fn invalid_values_are_rejected_with_typed_errors() {
     assert!(Background::solid(Vec3::new(0.0, f64::NAN, 0.0)).is_err());
     assert!(matches!(
         RenderSettings::new(0, 10, 0),
-        Err(Error::InvalidSettings(_))
+        Err(Error::InvalidValue {
+            field: Field::SamplesPerPixel,
+            ..
+        })
     ));
-    assert!(matches!(ScreenCamera::new(0, 0), Err(Error::InvalidSettings(_))));
+    assert!(matches!(
+        ScreenCamera::new(0, 0),
+        Err(Error::InvalidValue {
+            field: Field::ImageSize,
+            ..
+        })
+    ));
     assert!(Image::new(0, 5).is_err());
     assert!(Image::new(usize::MAX, 2).is_err());
     let cam = ScreenCamera::new(4, 2).unwrap();

@@ -1,0 +1,130 @@
+//! The value a constructor rejected, as a type: a caller routes an error by its field, never
+//! by its message's text.
+
+use std::fmt;
+
+/// One parameter of a library constructor: what an [`Error::InvalidValue`](super::Error)
+/// is about.
+///
+/// A scene file maps each to the key it is written under with a `match` that names every
+/// variant, so a field added here without a key does not compile.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Field {
+    /// [`Sphere::new`](crate::Sphere::new)'s centre.
+    SphereCenter,
+    /// [`Sphere::new`](crate::Sphere::new)'s radius.
+    SphereRadius,
+    /// [`Plane::new`](crate::Plane::new)'s point.
+    PlanePoint,
+    /// [`Plane::new`](crate::Plane::new)'s normal.
+    PlaneNormal,
+    /// [`Triangle::new`](crate::Triangle::new)'s first vertex, `A`.
+    TriangleA,
+    /// [`Triangle::new`](crate::Triangle::new)'s second vertex, `B`.
+    TriangleB,
+    /// [`Triangle::new`](crate::Triangle::new)'s third vertex, `C`.
+    TriangleC,
+    /// A triangle as a whole: its vertices are finite but it has no area.
+    Triangle,
+    /// [`Mesh::new`](crate::Mesh::new)'s vertices and triangles, as a whole.
+    Mesh,
+    /// [`Mirror::new`](crate::Mirror::new)'s albedo.
+    MirrorAlbedo,
+    /// [`Lambertian::new`](crate::Lambertian::new)'s albedo.
+    MatteAlbedo,
+    /// [`Dielectric::new`](crate::Dielectric::new)'s refractive index.
+    RefractiveIndex,
+    /// [`Dielectric::with_albedo`](crate::Dielectric::with_albedo)'s tint.
+    DielectricAlbedo,
+    /// [`Emissive::new`](crate::Emissive::new)'s (and [`Emission::new`](crate::Emission::new)'s) radiance.
+    EmittedRadiance,
+    /// [`Emissive::with_albedo`](crate::Emissive::with_albedo)'s albedo.
+    EmissiveAlbedo,
+    /// [`PointLight::new`](crate::PointLight::new)'s position.
+    LightPosition,
+    /// [`PointLight::new`](crate::PointLight::new)'s intensity.
+    LightIntensity,
+    /// [`Background::solid`](crate::Background::solid)'s colour.
+    BackgroundColor,
+    /// [`Background::sky`](crate::Background::sky)'s colour straight down.
+    SkyHorizon,
+    /// [`Background::sky`](crate::Background::sky)'s colour straight up.
+    SkyZenith,
+    /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s eye, `from`.
+    CameraFrom,
+    /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s target, `at`.
+    CameraAt,
+    /// The look-at camera's view direction `from − at` (zero when `from == at`).
+    CameraView,
+    /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s up vector.
+    CameraUp,
+    /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s vertical field of view.
+    CameraVfov,
+    /// [`ScreenCamera::translated`](crate::ScreenCamera::translated)'s eye.
+    CameraEye,
+    /// An image width one camera cannot take ([`ScreenCamera::with_width`](crate::ScreenCamera::with_width): odd, or below 4).
+    ImageWidth,
+    /// An image's width and height together (too small, too many pixels, not 2:1 for the
+    /// spec's camera).
+    ImageSize,
+    /// [`RenderSettings`](crate::RenderSettings)' samples per pixel.
+    SamplesPerPixel,
+    /// [`RenderSettings`](crate::RenderSettings)' recursion limit.
+    MaxDepth,
+    /// A parameter of a type outside the library (a user's own shape or material), named
+    /// by its author: `Error::invalid("disk radius", …)` makes one.
+    Custom(&'static str),
+}
+
+/// A user type's parameter, by its name.
+impl From<&'static str> for Field {
+    fn from(name: &'static str) -> Self {
+        Self::Custom(name)
+    }
+}
+
+impl Field {
+    /// What the field is, in a few words (`"sphere radius"`): how messages name it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::SphereCenter => "sphere centre",
+            Self::SphereRadius => "sphere radius",
+            Self::PlanePoint => "plane point",
+            Self::PlaneNormal => "plane normal",
+            Self::TriangleA => "triangle vertex A",
+            Self::TriangleB => "triangle vertex B",
+            Self::TriangleC => "triangle vertex C",
+            Self::Triangle => "triangle",
+            Self::Mesh => "mesh",
+            Self::MirrorAlbedo => "mirror albedo",
+            Self::MatteAlbedo => "matte albedo",
+            Self::RefractiveIndex => "refractive index",
+            Self::DielectricAlbedo => "dielectric albedo",
+            Self::EmittedRadiance => "emitted radiance",
+            Self::EmissiveAlbedo => "emissive albedo",
+            Self::LightPosition => "light position",
+            Self::LightIntensity => "light intensity",
+            Self::BackgroundColor => "background colour",
+            Self::SkyHorizon => "sky horizon colour",
+            Self::SkyZenith => "sky zenith colour",
+            Self::CameraFrom => "camera position",
+            Self::CameraAt => "camera target",
+            Self::CameraView => "camera view direction (from − at)",
+            Self::CameraUp => "camera up vector",
+            Self::CameraVfov => "camera field of view",
+            Self::CameraEye => "camera eye",
+            Self::ImageWidth => "image width",
+            Self::ImageSize => "image size",
+            Self::SamplesPerPixel => "samples per pixel",
+            Self::MaxDepth => "max depth",
+            Self::Custom(name) => name,
+        }
+    }
+}
+
+impl fmt::Display for Field {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}

@@ -1,0 +1,283 @@
+//! Every constructor error reaches its own key: routed by the error's typed field, so a
+//! constructor's message can change without moving it.
+
+use super::check::{blame, key};
+use super::location::KeyPath;
+use super::*;
+use crate::error::Field;
+
+const MATTE: &str = "[materials.m]\ntype = \"lambertian\"\nalbedo = [0.5, 0.5, 0.5]\n";
+
+/// A file that one constructor refuses, in `f64` unless `f32` is set: the field refused and
+/// the key it must be reported at.
+struct Case {
+    text: String,
+    f32: bool,
+    field: Field,
+    at: &'static str,
+}
+
+fn object(kind: &str, keys: &str) -> String {
+    format!("{MATTE}[[objects]]\ntype = \"{kind}\"\nmaterial = \"m\"\n{keys}\n")
+}
+
+fn material(kind: &str, keys: &str) -> String {
+    format!("[materials.x]\ntype = \"{kind}\"\n{keys}\n")
+}
+
+fn look_at(keys: &str) -> String {
+    let base = [
+        ("from", "from = [0, 0, 0]"),
+        ("at", "at = [0, 0, -1]"),
+        ("vfov", "vfov = 40"),
+        ("aspect", "aspect = 2"),
+    ];
+    let mut text = String::from("[camera]\ntype = \"look_at\"\n");
+    for (name, line) in base {
+        if !keys.contains(&format!("{name} =")) {
+            text += line;
+            text.push('\n');
+        }
+    }
+    text + keys + "\n"
+}
+
+/// One case per field, named in a `match` without a catch-all: a new field without a
+/// case here does not compile.
+fn case(field: Field) -> Option<Case> {
+    let (text, f32, at): (String, bool, &str) = match field {
+        Field::SphereCenter => (
+            object("sphere", "center = [0, 0, inf]\nradius = 1"),
+            false,
+            "objects[0].center",
+        ),
+        Field::SphereRadius => (
+            object("sphere", "center = [0, 0, -3]\nradius = 1e-60"),
+            true,
+            "objects[0].radius",
+        ),
+        Field::PlanePoint => (
+            object("plane", "point = [nan, 0, 0]\nnormal = [0, 1, 0]"),
+            false,
+            "objects[0].point",
+        ),
+        Field::PlaneNormal => (
+            object("plane", "point = [0, 0, 0]\nnormal = [0, 1e-50, 0]"),
+            true,
+            "objects[0].normal",
+        ),
+        Field::TriangleA => (
+            object("triangle", "a = [-inf, 0, 0]\nb = [1, 0, 0]\nc = [0, 1, 0]"),
+            false,
+            "objects[0].a",
+        ),
+        Field::TriangleB => (
+            object("triangle", "a = [0, 0, 0]\nb = [1e300, 0, 0]\nc = [0, 1, 0]"),
+            true,
+            "objects[0].b",
+        ),
+        Field::TriangleC => (
+            object("triangle", "a = [0, 0, 0]\nb = [1, 0, 0]\nc = [0, nan, 0]"),
+            false,
+            "objects[0].c",
+        ),
+        Field::Triangle => (
+            object("triangle", "a = [0, 0, 0]\nb = [1, 1, 1]\nc = [2, 2, 2]"),
+            false,
+            "objects[0]",
+        ),
+        // Moved where f32's step is 8: its x coordinates, ±1 about 10⁸, round to one value.
+        Field::Mesh => (
+            object("mesh", "file = \"meshes/rectangle.obj\"\ntranslate = [1e8, 0, 0]"),
+            true,
+            "objects[0].file",
+        ),
+        Field::MirrorAlbedo => (
+            material("mirror", "albedo = [1.5, 0, 0]"),
+            false,
+            "materials.x.albedo",
+        ),
+        Field::MatteAlbedo => (
+            material("lambertian", "albedo = [0, -0.5, 0]"),
+            false,
+            "materials.x.albedo",
+        ),
+        Field::RefractiveIndex => (material("dielectric", "index = 1e-50"), true, "materials.x.index"),
+        Field::DielectricAlbedo => (
+            material("dielectric", "index = 1.5\nalbedo = [0, 0, 2]"),
+            false,
+            "materials.x.albedo",
+        ),
+        Field::EmittedRadiance => (
+            material("emissive", "radiance = [1e300, 1, 1]"),
+            true,
+            "materials.x.radiance",
+        ),
+        Field::EmissiveAlbedo => (
+            material("emissive", "radiance = [1, 1, 1]\nalbedo = [nan, 0, 0]"),
+            false,
+            "materials.x.albedo",
+        ),
+        Field::LightPosition => (
+            "[[lights]]\nposition = [1e39, 0, 0]\nintensity = [1, 1, 1]\n".into(),
+            true,
+            "lights[0].position",
+        ),
+        Field::LightIntensity => (
+            "[[lights]]\nposition = [0, 0, 0]\nintensity = [1, -1, 1]\n".into(),
+            false,
+            "lights[0].intensity",
+        ),
+        Field::BackgroundColor => (
+            "[background]\ntype = \"solid\"\ncolor = [0, 0, -1]\n".into(),
+            false,
+            "background.color",
+        ),
+        Field::SkyHorizon => (
+            "[background]\ntype = \"sky\"\nhorizon = [inf, 0, 0]\n".into(),
+            false,
+            "background.horizon",
+        ),
+        Field::SkyZenith => (
+            "[background]\ntype = \"sky\"\nzenith = [0, 1e40, 0]\n".into(),
+            true,
+            "background.zenith",
+        ),
+        Field::CameraFrom => (look_at("from = [0, inf, 0]"), false, "camera.from"),
+        Field::CameraAt => (look_at("at = [0, 0, 1e39]"), true, "camera.at"),
+        Field::CameraView => (look_at("from = [1, 2, 3]\nat = [1, 2, 3]"), false, "camera.at"),
+        Field::CameraUp => (look_at("up = [0, 0, -1]"), false, "camera.up"),
+        Field::CameraVfov => (look_at("vfov = 180"), false, "camera.vfov"),
+        Field::CameraEye => (
+            "[camera]\ntype = \"screen\"\neye = [nan, 0, 0]\n".into(),
+            false,
+            "camera.eye",
+        ),
+        Field::ImageWidth => ("[render]\nwidth = 41\n".into(), false, "render.width"),
+        Field::ImageSize => (
+            format!("[render]\nwidth = 1\n{}", look_at("")),
+            false,
+            "render.width",
+        ),
+        Field::SamplesPerPixel => ("[render]\nspp = 0\n".into(), false, "render.spp"),
+        Field::MaxDepth => ("[render]\nmax_depth = 1001\n".into(), false, "render.max_depth"),
+        // A user's own type: no scene file builds one.
+        Field::Custom(_) => return None,
+    };
+    Some(Case { text, f32, field, at })
+}
+
+/// Every field, the user's own excepted. A field added to [`Field`] needs a case in the
+/// `match` above to compile, and belongs here too.
+const FIELDS: [Field; 30] = [
+    Field::SphereCenter,
+    Field::SphereRadius,
+    Field::PlanePoint,
+    Field::PlaneNormal,
+    Field::TriangleA,
+    Field::TriangleB,
+    Field::TriangleC,
+    Field::Triangle,
+    Field::Mesh,
+    Field::MirrorAlbedo,
+    Field::MatteAlbedo,
+    Field::RefractiveIndex,
+    Field::DielectricAlbedo,
+    Field::EmittedRadiance,
+    Field::EmissiveAlbedo,
+    Field::LightPosition,
+    Field::LightIntensity,
+    Field::BackgroundColor,
+    Field::SkyHorizon,
+    Field::SkyZenith,
+    Field::CameraFrom,
+    Field::CameraAt,
+    Field::CameraView,
+    Field::CameraUp,
+    Field::CameraVfov,
+    Field::CameraEye,
+    Field::ImageWidth,
+    Field::ImageSize,
+    Field::SamplesPerPixel,
+    Field::MaxDepth,
+];
+
+/// The file's error: the key, the field and the message.
+fn failure(c: &Case) -> (String, Option<Field>, String) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/t.toml");
+    let file = SceneFile::parse(&c.text, &path).unwrap_or_else(|e| panic!("{e}\n{}", c.text));
+    let built = if c.f32 {
+        file.build::<f32>().map(drop)
+    } else {
+        file.build::<f64>().map(drop)
+    };
+    match built {
+        Err(Error::SceneFile {
+            location,
+            field,
+            message,
+            ..
+        }) => (location, field, message),
+        other => panic!(
+            "{:?}: expected a scene file error, got {other:?}\n{}",
+            c.field, c.text
+        ),
+    }
+}
+
+#[test]
+fn the_fields_are_listed_once() {
+    let mut seen = std::collections::HashSet::new();
+    for field in FIELDS {
+        assert!(seen.insert(field), "{field:?} twice");
+        assert!(case(field).is_some(), "{field:?}");
+    }
+}
+
+#[test]
+fn every_constructor_error_reaches_its_own_key() {
+    for field in FIELDS {
+        let c = case(field).expect("every field but a user's has a case");
+        let (location, got, message) = failure(&c);
+        assert_eq!(
+            (location.as_str(), got),
+            (c.at, Some(field)),
+            "{message}\n{}",
+            c.text
+        );
+        if c.f32 {
+            assert!(
+                message.contains("in f32"),
+                "{field:?}: a value lost in rounding says so: {message}"
+            );
+            let f64_case = Case { f32: false, ..c };
+            let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/t.toml");
+            let file = SceneFile::parse(&f64_case.text, &path).unwrap();
+            assert!(
+                file.build::<f64>().is_ok(),
+                "{field:?}: the f32 case is valid in f64"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_key_follows_the_field_not_the_message() {
+    let file = Path::new("t.toml");
+    let root = KeyPath::root(file);
+    let entry = root.key("objects").index(2);
+    for field in FIELDS {
+        let at = |reason: &str| match blame(&root, &entry, Error::invalid(field, reason)) {
+            Error::SceneFile { location, field, .. } => (location, field),
+            other => panic!("{other:?}"),
+        };
+        // Another constructor's words, or none, reach the same key.
+        let words = at("sphere centre radius albedo render.width");
+        assert_eq!(words, at(""), "{field:?}");
+        assert_eq!(words.1, Some(field));
+        let Error::SceneFile { location, .. } = key(&root, &entry, field).error("") else {
+            unreachable!()
+        };
+        assert_eq!(words.0, location);
+    }
+}
