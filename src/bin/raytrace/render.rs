@@ -4,7 +4,8 @@ use crate::Failure;
 use crate::args::{PrecisionArg, RenderArgs};
 use crate::output::{self, Target};
 use raytrace::advice::Precision;
-use raytrace::image::{TileHeader, check_memory};
+use raytrace::cli::check_memory;
+use raytrace::image::TileHeader;
 use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
 use raytrace::{Camera, Error, Float, Rect, Render, Renderer, Result};
 
@@ -33,6 +34,8 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
     };
     let target = Target::for_render(args, file, precision)?;
     target.check_writable()?;
+    // Hashed before the build reads the meshes: a tile names the files it was made from.
+    let hash = args.tile.map(|_| output::scene_hash(file));
     let pool = output::pool(args.threads)?;
     let (render, camera) = pool.install(|| match precision {
         Precision::F32 => render_in::<f32>(file, args),
@@ -43,7 +46,7 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
         None => target.write_image(&render.image)?,
         Some(_) => {
             let header = TileHeader {
-                scene: output::scene_hash(file),
+                scene: hash.transpose()?.unwrap_or_default(),
                 settings: settings.clone(),
                 image_width: camera.0,
                 image_height: camera.1,
@@ -52,13 +55,13 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
             target.write_tile(&header, &render.image)?;
         }
     }
-    println!(
+    target.say(&format!(
         "wrote {}: {}×{} pixels, {settings}: {}",
         target.path.display(),
         render.image.width(),
         render.image.height(),
         render.stats
-    );
+    ));
     Ok(())
 }
 
