@@ -22,9 +22,6 @@ use std::num::ParseIntError;
 use std::path::PathBuf;
 use std::str::FromStr;
 
-/// The thread limit the `raytrace` binary has too: one definition, in `raytrace::cli`.
-pub use raytrace::cli::MAX_THREADS;
-
 /// An example's name, one-line description and default options.
 pub struct Example {
     /// The example's name, also the output files' stem.

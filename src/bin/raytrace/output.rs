@@ -59,11 +59,15 @@ impl Target {
     /// inputs, a folder or a device it may not replace, or its folder is not writable
     /// (standard output: a terminal, which cannot show an image).
     pub fn check_writable(&self) -> Result<()> {
+        let refuse = |message: String| Error::Io {
+            path: shown(&self.path).into(),
+            source: io::Error::new(io::ErrorKind::InvalidInput, message),
+        };
         let out = if self.is_stdout() {
             if io::stdout().is_terminal() {
-                return Err(usage(
-                    "--out - writes the image to standard output, which is a terminal here: \
-                     redirect it to a file or a pipe",
+                return Err(refuse(
+                    "--out - writes the image here, and it is a terminal: redirect it to a file or a pipe"
+                        .into(),
                 ));
             }
             // Standard output redirected into an input would destroy it as surely.
@@ -73,9 +77,8 @@ impl Target {
             &self.path
         };
         match inputs::overwritten(out, &self.inputs) {
-            Some(input) => Err(usage(&format!(
-                "--out {} is {}, which this command reads: refusing to overwrite an input",
-                self.path.display(),
+            Some(input) => Err(refuse(format!(
+                "--out names {}, which this command reads: refusing to overwrite an input",
                 input.display()
             ))),
             None => Ok(()),
@@ -121,6 +124,11 @@ impl Target {
         } else {
             println!("{line}");
         }
+    }
+
+    /// The output's name for messages (`standard output` for `-`).
+    pub fn name(&self) -> String {
+        shown(&self.path)
     }
 
     fn is_stdout(&self) -> bool {

@@ -57,7 +57,7 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
     }
     target.say(&format!(
         "wrote {}: {}×{} pixels, {settings}: {}",
-        target.path.display(),
+        target.name(),
         render.image.width(),
         render.image.height(),
         render.stats
