@@ -115,7 +115,10 @@ fn nothing(_: &Path) -> bool {
 fn edit_pixel(dir: &Path, name: &str, at: usize, value: f64) {
     let bytes = fs::read(dir.join(name)).unwrap();
     let end = bytes.windows(2).position(|w| w == b"\n\n").unwrap() + 2;
-    let (head, mut data) = (String::from_utf8(bytes[..end].to_vec()).unwrap(), bytes[end..].to_vec());
+    let (head, mut data) = (
+        String::from_utf8(bytes[..end].to_vec()).unwrap(),
+        bytes[end..].to_vec(),
+    );
     data[at..at + 8].copy_from_slice(&value.to_le_bytes());
     let sum = data.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
         (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
@@ -201,7 +204,11 @@ const CASES: &[Case] = &[
         name: "a tile of format version 1",
         setup: |d| {
             let bytes = fs::read(d.join("t1.rtile")).unwrap();
-            fs::write(d.join("t1.rtile"), [b"raytrace-tile 1".as_slice(), &bytes[15..]].concat()).unwrap();
+            fs::write(
+                d.join("t1.rtile"),
+                [b"raytrace-tile 1".as_slice(), &bytes[15..]].concat(),
+            )
+            .unwrap();
             true
         },
         args: &["merge", "t1.rtile", "t2.rtile", "--out", "x.png"],
@@ -232,7 +239,9 @@ const CASES: &[Case] = &[
     Case {
         name: "a merge into one of its tiles",
         setup: nothing,
-        args: &["merge", "t1.rtile", "t2.rtile", "--format", "png", "--out", "t1.rtile"],
+        args: &[
+            "merge", "t1.rtile", "t2.rtile", "--format", "png", "--out", "t1.rtile",
+        ],
         code: 1,
         words: &["t1.rtile: --out names t1.rtile", "refusing to overwrite an input"],
     },
@@ -371,9 +380,18 @@ fn bad_files_fail_clearly_and_change_nothing() {
         let before = snapshot(&dir);
         let args: Vec<String> = case.args.iter().map(|a| a.to_string()).collect();
         let o = run(&dir, &args);
-        let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+        let text = format!(
+            "{}{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        );
         if o.status.code() != Some(case.code) {
-            failures.push(format!("{}: exit {:?}, not {}: {text}", case.name, o.status.code(), case.code));
+            failures.push(format!(
+                "{}: exit {:?}, not {}: {text}",
+                case.name,
+                o.status.code(),
+                case.code
+            ));
         }
         for w in case.words {
             if !text.contains(w) {

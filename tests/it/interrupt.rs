@@ -208,46 +208,48 @@ fn threads(pid: u32) -> usize {
 
 #[cfg(target_os = "linux")]
 #[test]
-fn a_render_stopped_by_sigterm_leaves_nothing_and_says_so() {
-    let dir = temp_dir("render-term");
+fn a_render_stopped_by_a_signal_leaves_nothing_and_says_so() {
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/matte_spheres.toml");
-    let out = dir.join("new/sub/x.png");
-    // A render of minutes, stopped once it renders: its handler is in place, and the
-    // worker threads (more than the main thread and the handler's) have started.
-    let mut child = Command::new(BIN)
-        .args([
-            "render",
-            scene.to_str().unwrap(),
-            "--spp",
-            "5000",
-            "--width",
-            "800",
-        ])
-        .arg("--out")
-        .arg(&out)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
+    for (signal, n) in [("TERM", 15), ("HUP", 1), ("INT", 2)] {
+        let dir = temp_dir(&format!("render-{signal}"));
+        let out = dir.join("new/sub/x.png");
+        // A render of minutes, stopped once it renders: its handler is in place, and the
+        // worker threads (more than the main thread and the handler's) have started.
+        let mut child = Command::new(BIN)
+            .args([
+                "render",
+                scene.to_str().unwrap(),
+                "--spp",
+                "5000",
+                "--width",
+                "800",
+            ])
+            .arg("--out")
+            .arg(&out)
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let pid = child.id();
+        wait_for(&mut child, "the render", || {
+            catches_sigterm(pid) && threads(pid) > 2
+        })
         .unwrap();
-    let pid = child.id();
-    wait_for(&mut child, "the render", || {
-        catches_sigterm(pid) && threads(pid) > 2
-    })
-    .unwrap();
-    send(&child, "TERM");
-    let output = child.wait_with_output().unwrap();
-    stopped(
-        &output,
-        "TERM",
-        15,
-        &["raytrace:", "while rendering", "matte_spheres.toml"],
-    );
-    assert_eq!(
-        names(&dir),
-        Vec::<String>::new(),
-        "the folders or a file were left"
-    );
-    std::fs::remove_dir_all(dir).unwrap();
+        send(&child, signal);
+        let output = child.wait_with_output().unwrap();
+        stopped(
+            &output,
+            signal,
+            n,
+            &["raytrace:", "while rendering", "matte_spheres.toml", "x.png"],
+        );
+        assert_eq!(
+            names(&dir),
+            Vec::<String>::new(),
+            "SIG{signal}: folders or a file were left"
+        );
+        std::fs::remove_dir_all(dir).unwrap();
+    }
 }
 
 /// Writes two tiles of a `width × height` image of noise, for a merge that takes a while
@@ -278,11 +280,23 @@ fn big_tiles(dir: &Path, width: usize, height: usize) -> Vec<PathBuf> {
 #[cfg(unix)]
 #[test]
 fn a_merge_stopped_while_writing_leaves_nothing_and_says_so() {
-    let (dir, tiles) = (temp_dir("merge-hup"), temp_dir("merge-hup-tiles"));
-    // Signalled once the image's temporary file exists; a write so quick that it ends
-    // before the poll sees it is tried again, larger.
+    for (signal, n) in [("HUP", 1), ("TERM", 15), ("INT", 2)] {
+        let (dir, tiles) = (
+            temp_dir(&format!("merge-{signal}")),
+            temp_dir(&format!("merge-{signal}-tiles")),
+        );
+        merge_until_signalled(&dir, &tiles, signal, n);
+        std::fs::remove_dir_all(dir).unwrap();
+        std::fs::remove_dir_all(tiles).unwrap();
+    }
+}
+
+/// Merges tiles into `dir/x.ppm`, sends `signal` once the image's temporary file exists,
+/// and checks the exit and that nothing is left. A write so quick that it ends before the
+/// poll sees its file is tried again, larger.
+fn merge_until_signalled(dir: &Path, tiles: &Path, signal: &str, n: i32) {
     for height in [600, 1200, 2400] {
-        let paths = big_tiles(&tiles, 2 * height, height);
+        let paths = big_tiles(tiles, 2 * height, height);
         let mut child = Command::new(BIN)
             .args(["merge", "--out"])
             .arg(dir.join("x.ppm"))
@@ -291,22 +305,20 @@ fn a_merge_stopped_while_writing_leaves_nothing_and_says_so() {
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
-        if wait_for(&mut child, "a temporary file", || !temporaries(&dir).is_empty()).is_err() {
+        if wait_for(&mut child, "a temporary file", || !temporaries(dir).is_empty()).is_err() {
             std::fs::remove_file(dir.join("x.ppm")).unwrap();
             continue;
         }
-        send(&child, "HUP");
+        send(&child, signal);
         let output = child.wait_with_output().unwrap();
         stopped(
             &output,
-            "HUP",
-            1,
+            signal,
+            n,
             &["while writing", "x.ppm", "removed the unfinished"],
         );
-        assert_eq!(names(&dir), Vec::<String>::new(), "a file was left");
-        std::fs::remove_dir_all(dir).unwrap();
-        std::fs::remove_dir_all(tiles).unwrap();
+        assert_eq!(names(dir), Vec::<String>::new(), "SIG{signal}: a file was left");
         return;
     }
-    panic!("every merge finished before its temporary file was seen");
+    panic!("SIG{signal}: every merge finished before its temporary file was seen");
 }

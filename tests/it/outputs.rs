@@ -22,7 +22,15 @@ fn folder(test: &str) -> PathBuf {
 /// `raytrace render` of the scene, 24 pixels wide, 2 samples, with `args` after.
 fn render(args: &[&str]) -> Output {
     let o = Command::new(BIN)
-        .args(["render", scene().to_str().unwrap(), "--width", "24", "--spp", "2", "--quiet"])
+        .args([
+            "render",
+            scene().to_str().unwrap(),
+            "--width",
+            "24",
+            "--spp",
+            "2",
+            "--quiet",
+        ])
         .args(args)
         .output()
         .unwrap();
@@ -54,7 +62,10 @@ fn standard_output_gets_the_files_bytes_and_the_summary_goes_to_stderr() {
     for format in ["png", "ppm", "exr", "pfm"] {
         let o = render(&["--format", format, "--out", "-"]);
         let want = plain(&dir, &format!("x.{format}"), &[]);
-        assert!(o.stdout == want, "{format}: standard output differs from the file");
+        assert!(
+            o.stdout == want,
+            "{format}: standard output differs from the file"
+        );
         let err = String::from_utf8_lossy(&o.stderr);
         assert!(err.contains("wrote standard output"), "{format}: {err}");
     }
@@ -63,7 +74,12 @@ fn standard_output_gets_the_files_bytes_and_the_summary_goes_to_stderr() {
     fs::write(dir.join("t.rtile"), &o.stdout).unwrap();
     let merged = dir.join("m.png");
     let m = Command::new(BIN)
-        .args(["merge", dir.join("t.rtile").to_str().unwrap(), "--out", merged.to_str().unwrap()])
+        .args([
+            "merge",
+            dir.join("t.rtile").to_str().unwrap(),
+            "--out",
+            merged.to_str().unwrap(),
+        ])
         .output()
         .unwrap();
     assert!(m.status.success(), "{}", String::from_utf8_lossy(&m.stderr));
@@ -80,7 +96,15 @@ fn a_fifo_is_streamed_into_and_stays_a_fifo() {
     let fifo = dir.join("pipe.png");
     assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
     let mut child = Command::new(BIN)
-        .args(["render", scene().to_str().unwrap(), "--width", "24", "--spp", "2", "--quiet"])
+        .args([
+            "render",
+            scene().to_str().unwrap(),
+            "--width",
+            "24",
+            "--spp",
+            "2",
+            "--quiet",
+        ])
         .args(["--out", fifo.to_str().unwrap()])
         .stdout(Stdio::null())
         .spawn()
@@ -102,8 +126,16 @@ fn a_symbolic_link_is_written_through_and_stays_a_link() {
     fs::write(dir.join("real/latest.png"), "old").unwrap();
     std::os::unix::fs::symlink("real/latest.png", dir.join("latest.png")).unwrap();
     render(&["--out", dir.join("latest.png").to_str().unwrap()]);
-    assert!(fs::symlink_metadata(dir.join("latest.png")).unwrap().file_type().is_symlink());
-    assert_eq!(fs::read(dir.join("real/latest.png")).unwrap(), plain(&dir, "x.png", &[]));
+    assert!(
+        fs::symlink_metadata(dir.join("latest.png"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert_eq!(
+        fs::read(dir.join("real/latest.png")).unwrap(),
+        plain(&dir, "x.png", &[])
+    );
     assert_eq!(names(&dir.join("real")), ["latest.png"]);
     fs::remove_dir_all(dir).unwrap();
 }
@@ -138,7 +170,15 @@ fn tiles_of_a_mesh_scene_merge_to_the_whole_render() {
     let cornell = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.toml");
     let run = |args: &[&str]| {
         let o = Command::new(BIN)
-            .args(["render", cornell.to_str().unwrap(), "--width", "16", "--spp", "2", "--quiet"])
+            .args([
+                "render",
+                cornell.to_str().unwrap(),
+                "--width",
+                "16",
+                "--spp",
+                "2",
+                "--quiet",
+            ])
             .args(args)
             .output()
             .unwrap();
