@@ -49,6 +49,7 @@ pub fn clean_up_on_signals(program: &'static str) -> io::Result<()> {
 #[cfg(unix)]
 fn stop(program: &str, signal: i32) {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    use std::io::Write as _;
     let name = match signal {
         SIGINT => "SIGINT (Ctrl-C)",
         SIGTERM => "SIGTERM",
@@ -69,7 +70,11 @@ fn stop(program: &str, signal: i32) {
     } else {
         format!(" while {activity}")
     };
-    // A progress bar may hold the line: start a new one.
-    eprintln!("\n{program}: stopped by {name}{activity}{removed}; nothing was left behind");
+    // A progress bar may hold the line: start a new one. A closed stderr must not keep
+    // the process from exiting (eprintln! would panic this thread instead).
+    let _ = writeln!(
+        io::stderr(),
+        "\n{program}: stopped by {name}{activity}{removed}; nothing was left behind"
+    );
     std::process::exit(128 + signal);
 }

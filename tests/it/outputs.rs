@@ -202,3 +202,37 @@ fn tiles_of_a_mesh_scene_merge_to_the_whole_render() {
     assert_eq!(fs::read(whole).unwrap(), fs::read(merged).unwrap());
     fs::remove_dir_all(dir).unwrap();
 }
+
+/// On a terminal (a pseudo-terminal from util-linux's `script`), the progress bar is drawn
+/// before the first band of rows is done, and a spinner says what is being written.
+#[cfg(unix)]
+#[test]
+fn a_terminal_sees_the_bar_at_once_and_the_write() {
+    let dir = folder("terminal");
+    let out = dir.join("x.png");
+    let command = format!(
+        "{BIN} render {} --width 64 --spp 2 --out {}",
+        scene().display(),
+        out.display()
+    );
+    let Ok(o) = Command::new("script")
+        .args(["-qec", &command, "/dev/null"])
+        .output()
+    else {
+        eprintln!("note: util-linux's `script` is missing: the terminal test is skipped");
+        return;
+    };
+    let screen = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{screen}");
+    let first = screen.find(" rows").expect("no progress bar");
+    assert!(
+        screen[..first].ends_with(" 0/32"),
+        "the first bar drawn is not at 0 rows: {screen}"
+    );
+    assert!(
+        screen.contains(&format!("writing {} (png)", out.display())),
+        "{screen}"
+    );
+    assert!(out.exists());
+    fs::remove_dir_all(dir).unwrap();
+}
