@@ -90,29 +90,32 @@ fn standard_output_gets_the_files_bytes_and_the_summary_goes_to_stderr() {
 #[cfg(unix)]
 #[test]
 fn a_fifo_is_streamed_into_and_stays_a_fifo() {
-    use std::io::Read;
     use std::os::unix::fs::FileTypeExt;
+    use std::time::{Duration, Instant};
     let dir = folder("fifo");
     let fifo = dir.join("pipe.png");
     assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
-    let mut child = Command::new(BIN)
-        .args([
-            "render",
-            scene().to_str().unwrap(),
-            "--width",
-            "24",
-            "--spp",
-            "2",
-            "--quiet",
-        ])
-        .args(["--out", fifo.to_str().unwrap()])
-        .stdout(Stdio::null())
+    // The reader is a process, so that it can be stopped if nothing ever writes into the
+    // FIFO (as when a rename replaced it).
+    let mut reader = Command::new("cat")
+        .arg(&fifo)
+        .stdout(Stdio::piped())
         .spawn()
         .unwrap();
-    let mut bytes = Vec::new();
-    fs::File::open(&fifo).unwrap().read_to_end(&mut bytes).unwrap();
-    assert!(child.wait().unwrap().success());
-    assert!(fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo());
+    render(&["--out", fifo.to_str().unwrap()]);
+    let deadline = Instant::now() + Duration::from_secs(30);
+    while reader.try_wait().unwrap().is_none() {
+        if Instant::now() > deadline {
+            reader.kill().unwrap();
+            panic!("nothing was written into the FIFO");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let bytes = reader.wait_with_output().unwrap().stdout;
+    assert!(
+        fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo(),
+        "the FIFO was replaced"
+    );
     assert_eq!(names(&dir), ["pipe.png"]);
     assert!(bytes == plain(&dir, "x.png", &[]), "the FIFO got other bytes");
     fs::remove_dir_all(dir).unwrap();

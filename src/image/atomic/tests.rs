@@ -152,22 +152,26 @@ fn a_device_is_streamed_into_never_replaced() {
 #[cfg(unix)]
 #[test]
 fn a_fifo_is_streamed_into() {
-    use std::io::Read;
     use std::os::unix::fs::FileTypeExt;
+    use std::process::{Command, Stdio};
     let dir = temp_dir("fifo");
     let fifo = dir.join("pipe.ppm");
-    let made = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
-    assert!(made.success());
-    let reader = {
-        let fifo = fifo.clone();
-        std::thread::spawn(move || {
-            let mut bytes = Vec::new();
-            File::open(fifo).unwrap().read_to_end(&mut bytes).unwrap();
-            bytes
-        })
-    };
-    write_atomic(&fifo, |w| w.write_all(b"P3\n1 1\n65535\n0 0 0\n")).unwrap();
-    assert_eq!(reader.join().unwrap(), b"P3\n1 1\n65535\n0 0 0\n");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    // A process, which can be stopped if nothing ever writes into the FIFO.
+    let mut reader = Command::new("cat")
+        .arg(&fifo)
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let result = write_atomic(&fifo, |w| w.write_all(b"P3\n1 1\n65535\n0 0 0\n"));
+    if result.is_err() || !fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo() {
+        reader.kill().unwrap();
+    }
+    result.unwrap();
+    assert_eq!(
+        reader.wait_with_output().unwrap().stdout,
+        b"P3\n1 1\n65535\n0 0 0\n"
+    );
     assert!(fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo());
     assert_eq!(names(&dir), ["pipe.ppm"]);
     fs::remove_dir_all(dir).unwrap();
