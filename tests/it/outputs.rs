@@ -150,7 +150,7 @@ fn names_up_to_255_bytes_are_written() {
     for len in [243, 249, 255] {
         let name = format!("{}.png", "n".repeat(len - 4));
         render(&["--out", dir.join(&name).to_str().unwrap()]);
-        assert_eq!(names(&dir), [name.clone()], "{len} bytes");
+        assert_eq!(names(&dir), std::slice::from_ref(&name), "{len} bytes");
         assert!(fs::read(dir.join(&name)).unwrap() == want);
         fs::remove_file(dir.join(name)).unwrap();
     }
