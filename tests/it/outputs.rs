@@ -19,7 +19,8 @@ fn folder(test: &str) -> PathBuf {
     dir
 }
 
-/// `raytrace render` of the scene, 24 pixels wide, 2 samples, with `args` after.
+/// `raytrace render` of the scene, 24 pixels wide, 2 samples, with `args` after (run in
+/// the temporary folder: a binary that took `-` for a name would leave its file there).
 fn render(args: &[&str]) -> Output {
     let o = Command::new(BIN)
         .args([
@@ -32,6 +33,7 @@ fn render(args: &[&str]) -> Output {
             "--quiet",
         ])
         .args(args)
+        .current_dir(std::env::temp_dir())
         .output()
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
