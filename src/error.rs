@@ -52,8 +52,6 @@ pub enum Error {
     Tiles(String),
     /// A malformed PFM file.
     Pfm(String),
-    /// The Ctrl-C handler could not be installed.
-    Interrupt(String),
 }
 
 impl Error {
@@ -83,7 +81,6 @@ impl fmt::Display for Error {
             Self::Mesh { path, message } => write!(f, "{}: {message}", path.display()),
             Self::Tiles(reason) => write!(f, "tiles: {reason}"),
             Self::Pfm(reason) => write!(f, "malformed PFM: {reason}"),
-            Self::Interrupt(reason) => write!(f, "cannot handle Ctrl-C: {reason}"),
         }
     }
 }

@@ -1,31 +1,38 @@
 //! Images: the linear RGB buffer a render produces, its 16-bit encoding, the files it is
 //! written to (PPM and PNG for viewing, PFM and OpenEXR keeping linear values above 1),
-//! the tile files a render split across processes is merged from, and the checks worth
-//! making before a long render (memory, a writable folder).
+//! and the tile files a render split across processes is merged from. Every file is
+//! written atomically ([`write_atomic`]'s rules for links, devices and FIFOs); each format
+//! also has a `write_*_to` form that encodes into any writer (a pipe, standard output).
 
-mod atomic;
+pub(crate) mod atomic;
 mod encoding;
 mod exr;
-mod memory;
 mod pfm;
 mod png;
 mod ppm;
 mod rect;
 mod tile;
 
-pub use self::exr::write_exr;
-#[cfg(feature = "cli")]
-pub use atomic::on_interrupt_remove_temporary_files;
-pub use atomic::{check_writable, remove_temporary_files, write_atomic};
+pub use self::exr::{write_exr, write_exr_to};
+pub use atomic::write_atomic;
 pub use encoding::Encoding;
-pub use memory::{BYTES_PER_PIXEL, check_memory};
-pub use pfm::{parse_pfm, read_pfm, write_pfm};
-pub use png::write_png;
+pub use pfm::{parse_pfm, read_pfm, write_pfm, write_pfm_to};
+pub use png::{write_png, write_png_to};
 pub use ppm::{parse_ppm, read_ppm, write_ppm, write_ppm_to};
 pub use rect::Rect;
-pub use tile::{TileHeader, merge_tiles, parse_tile, read_tile, write_tile};
+pub use tile::{TileHeader, check_tile, merge_tiles, parse_tile, read_tile, write_tile, write_tile_to};
 
 use crate::error::{Error, Result};
+
+/// `c` rounded to the nearest `f32`, clamped to `±f32::MAX` where it lies beyond: a very
+/// bright but finite value stays finite in a float file (EXR, PFM), as the brightest value
+/// the file can hold. NaN stays NaN.
+///
+/// # Precision
+/// As `c as f32` inside `f32`'s range (round to nearest, ties to even).
+pub fn to_finite_f32(c: f64) -> f32 {
+    c.clamp(-f64::from(f32::MAX), f64::from(f32::MAX)) as f32
+}
 
 /// The largest image accepted, in pixels (2²⁸: a 16384×16384 render, 6 GiB as `f64`).
 pub const MAX_PIXELS: usize = 1 << 28;

@@ -34,6 +34,8 @@ pub mod advice;
 pub mod background;
 pub mod bvh;
 pub mod camera;
+#[cfg(feature = "cli")]
+pub mod cli;
 pub mod double_double;
 pub mod error;
 pub mod float;

@@ -166,6 +166,19 @@ impl SceneFile {
         &self.path
     }
 
+    /// The other files the scene is made from: each mesh's file, as [`SceneFile::build`]
+    /// finds it (relative to the scene file's folder), in the order of `[[objects]]`.
+    pub fn mesh_files(&self) -> Vec<PathBuf> {
+        let folder = self.path.parent().unwrap_or(Path::new(""));
+        self.objects
+            .iter()
+            .filter_map(|o| match o {
+                ObjectSpec::Mesh { file, .. } => Some(folder.join(file)),
+                _ => None,
+            })
+            .collect()
+    }
+
     /// The `[render]` options.
     pub fn render(&self) -> &RenderOptions {
         &self.render

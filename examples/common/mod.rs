@@ -20,24 +20,21 @@ pub fn options(example: &Example) -> Options {
         .unwrap_or_else(|e| e.exit())
 }
 
-/// The worker threads the options ask for (all cores if they name no number).
+/// The worker threads the options ask for (all cores if they name no number): the pool
+/// the `raytrace` binary makes too ([`raytrace::cli::pool`]).
 pub fn pool(opts: &Options) -> raytrace::Result<rayon::ThreadPool> {
-    let mut pool = rayon::ThreadPoolBuilder::new();
-    if let Some(t) = opts.threads {
-        pool = pool.num_threads(t);
-    }
-    pool.build().map_err(|e| {
-        let threads = opts
-            .threads
-            .map_or_else(|| "a thread per core".into(), |t| format!("{t} threads"));
-        raytrace::Error::InvalidSettings(format!("cannot start {threads}: {e}"))
-    })
+    raytrace::cli::pool(opts.threads)
 }
 
 /// Parses the command line, renders with `render` on the requested number of threads,
-/// writes `<out>/<name>.ppm` and `.png`, and prints where they went and what it cost.
+/// writes `<out>/<name>.ppm` and `.png`, and prints where they went and what it cost. A
+/// signal (Ctrl-C, SIGTERM, SIGHUP) stops it without leaving a temporary file.
 pub fn main(example: Example, render: impl FnOnce(&Options) -> raytrace::Result<Render> + Send) -> ExitCode {
     let opts = options(&example);
+    if let Err(e) = raytrace::cli::clean_up_on_signals(example.name) {
+        eprintln!("error: cannot handle signals: {e}");
+        return ExitCode::FAILURE;
+    }
     match run(example.name, &opts, render) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -68,12 +65,15 @@ fn run(
     render: impl FnOnce(&Options) -> raytrace::Result<Render> + Send,
 ) -> raytrace::Result<()> {
     let start = Instant::now();
-    // A folder that cannot be written fails now, not after the render.
-    raytrace::image::check_writable(&opts.out)?;
-    let rendered = pool(opts)?.install(|| render(opts))?;
-    let samples = rendered.image.to_u16(opts.encoding);
     let ppm = opts.out.join(format!("{name}.ppm"));
     let png = opts.out.join(format!("{name}.png"));
+    // An output that cannot be written fails now, not after the render.
+    raytrace::cli::check_output(&ppm)?;
+    raytrace::cli::check_output(&png)?;
+    raytrace::cli::set_activity(format!("rendering {name}"));
+    let rendered = pool(opts)?.install(|| render(opts))?;
+    raytrace::cli::set_activity(format!("writing {}", ppm.display()));
+    let samples = rendered.image.to_u16(opts.encoding);
     files::write_both(&ppm, &png, &samples, opts.encoding)?;
     println!(
         "{name}: {}×{} pixels, {} spp, max depth {}, {}, seed {}",

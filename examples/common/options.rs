@@ -15,15 +15,12 @@
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Arg, CommandFactory, FromArgMatches, Parser};
 use raytrace::advice::Precision;
+use raytrace::cli::parse_threads;
 use raytrace::image::Encoding;
 use std::ffi::OsString;
 use std::num::ParseIntError;
 use std::path::PathBuf;
 use std::str::FromStr;
-
-/// Most worker threads accepted: far more than the cores of any machine this runs on,
-/// while starting many thousands would take minutes or exhaust the system.
-pub const MAX_THREADS: usize = 256;
 
 /// An example's name, one-line description and default options.
 pub struct Example {
@@ -56,7 +53,7 @@ pub struct Options {
         .map(|s| if s == "f32" { Precision::F32 } else { Precision::F64 }))]
     pub precision: Precision,
     /// Worker threads, 1 to 256 [default: all cores]
-    #[arg(long, value_name = "T", value_parser = threads)]
+    #[arg(long, value_name = "T", value_parser = parse_threads)]
     pub threads: Option<usize>,
     /// How colour is stored in the files
     #[arg(long, value_name = "E", value_parser = PossibleValuesParser::new(["srgb", "linear"])
@@ -135,13 +132,5 @@ where
         Ok(n) if n >= T::from(1) => Ok(n),
         Ok(_) => Err("must be at least 1".into()),
         Err(e) => Err(format!("expected a whole number ≥ 1 ({e})")),
-    }
-}
-
-/// Parses a thread count, from 1 to [`MAX_THREADS`].
-fn threads(s: &str) -> Result<usize, String> {
-    match s.parse::<usize>() {
-        Ok(n) if (1..=MAX_THREADS).contains(&n) => Ok(n),
-        _ => Err(format!("expected a whole number from 1 to {MAX_THREADS}")),
     }
 }

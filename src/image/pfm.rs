@@ -9,30 +9,36 @@
 //!
 //! Each header line ends in one whitespace byte (a newline here); the samples follow it.
 
-use super::{Image, check_size, write_atomic};
+use super::{Image, check_size, to_finite_f32, write_atomic};
 use crate::error::{Error, Result};
-use std::io::Write;
+use std::io::{self, Write};
 use std::path::Path;
 
-/// Writes `image` as a colour PFM, atomically (see [`write_atomic`]): little-endian
-/// (scale `-1.0`), rows bottom to top as the format requires.
+/// Writes `image` as a colour PFM, atomically (see [`write_atomic`]); as [`write_pfm_to`].
+pub fn write_pfm(path: &Path, image: &Image) -> Result<()> {
+    write_atomic(path, |out| write_pfm_to(out, image))
+}
+
+/// Writes `image` as a colour PFM into `out`: little-endian (scale `-1.0`), rows bottom
+/// to top as the format requires.
 ///
 /// # Precision
-/// Each channel is rounded to the nearest `f32`; magnitudes beyond `f32::MAX` become
-/// infinite.
-pub fn write_pfm(path: &Path, image: &Image) -> Result<()> {
-    write_atomic(path, |out| {
-        write!(out, "PF\n{} {}\n-1.0\n", image.width(), image.height())?;
-        let mut row = Vec::with_capacity(12 * image.width());
-        for line in image.pixels().chunks_exact(image.width()).rev() {
-            row.clear();
-            for &c in line.iter().flatten() {
-                row.extend_from_slice(&(c as f32).to_le_bytes());
-            }
-            out.write_all(&row)?;
+/// Each channel is rounded to the nearest `f32`; a finite value beyond `f32`'s range is
+/// clamped to the largest finite `f32` ([`to_finite_f32`]), never written as infinity.
+///
+/// # Errors
+/// A failure to write.
+pub fn write_pfm_to(out: &mut impl Write, image: &Image) -> io::Result<()> {
+    write!(out, "PF\n{} {}\n-1.0\n", image.width(), image.height())?;
+    let mut row = Vec::with_capacity(12 * image.width());
+    for line in image.pixels().chunks_exact(image.width()).rev() {
+        row.clear();
+        for &c in line.iter().flatten() {
+            row.extend_from_slice(&to_finite_f32(c).to_le_bytes());
         }
-        Ok(())
-    })
+        out.write_all(&row)?;
+    }
+    Ok(())
 }
 
 /// Reads a PFM file (see [`parse_pfm`]).
@@ -169,6 +175,17 @@ mod tests {
         assert_eq!(bytes, want);
         assert_eq!(read_pfm(&path).unwrap(), image);
         std::fs::remove_file(path).unwrap();
+    }
+
+    #[test]
+    fn very_bright_values_are_clamped_never_infinite() {
+        let big = f64::from(f32::MAX);
+        let image =
+            Image::from_pixels(2, 1, vec![[1e300, 1e41, big * 1.000_000_1], [big, 1.0, 0.0]]).unwrap();
+        let mut bytes = Vec::new();
+        write_pfm_to(&mut bytes, &image).unwrap();
+        let read = parse_pfm(&bytes).unwrap();
+        assert_eq!(read.pixels(), &[[big; 3], [big, 1.0, 0.0]]);
     }
 
     #[test]

@@ -3,39 +3,53 @@
 //!
 //! The format is documented on [`TileHeader`], where the public docs show it.
 
+mod merge;
+
+pub use merge::merge_tiles;
+
 use super::{Image, Rect, check_size, write_atomic};
 use crate::error::{Error, Result};
-use std::io::Write;
+use std::io::{self, Write};
 use std::path::Path;
 
 /// The first line of every tile file.
-const MAGIC: &str = "raytrace-tile 1";
+const MAGIC: &str = "raytrace-tile 2";
 
 /// What a tile file says about its tile: which render it belongs to and where it goes.
 ///
 /// A tile file is a text header, an empty line, then the data:
 ///
 /// ```text
-/// raytrace-tile 1
+/// raytrace-tile 2
 /// scene = 9f3c0a4e5d7b2e11
 /// settings = spp=16 max_depth=10 seed=0 precision=f32
 /// image = 640 480
 /// rect = 0 120 640 120
+/// pixels = 5d3ab2c0e1f49a07
 ///
 /// <the tile's linear pixels: R G B as f64 little-endian, row by row from its top-left>
 /// ```
 ///
-/// - The first line is the magic `raytrace-tile` and the format's version, `1`.
-/// - Then one `key = value` line for each of the four keys, in any order, each once:
+/// - The first line is the magic `raytrace-tile` and the format's version, `2` (version
+///   1 had no `pixels` key; it is refused).
+/// - Then one `key = value` line for each of the five keys, in any order, each once:
 ///   the value is everything after the first ` = ` on its line.
 ///   - `scene`: a hash of what was rendered, chosen by the caller (for example FNV-1a 64
 ///     of the scene file's bytes and the settings), as hexadecimal digits;
 ///   - `settings`: free text chosen by the caller, without control characters, that must
 ///     match between tiles (for example `spp=16 max_depth=10 seed=0 precision=f32`);
 ///   - `image`: the whole image's width and height;
-///   - `rect`: the tile's `x y width height` in that image (rows from the top).
+///   - `rect`: the tile's `x y width height` in that image (rows from the top);
+///   - `pixels`: the checksum of the pixel bytes, FNV-1a 64 as 16 hexadecimal digits,
+///     written by [`write_tile`] (it is not a field of this struct). Any one changed byte
+///     changes it: each step of FNV-1a is a bijection of its state.
 /// - An empty line ends the header (every line ends in `\n`).
-/// - Exactly `24 × width × height` bytes of the rect follow, nothing after them.
+/// - Exactly `24 × width × height` bytes of the rect follow, nothing after them. Every
+///   value is a number that is not negative (`+∞` included): a render makes no other.
+///
+/// What a tile proves on reading ([`read_tile`]): its pixels are the bytes its writer
+/// wrote, and none is NaN or negative. What the merge adds ([`merge_tiles`]): the tiles
+/// agree on the scene hash, the settings and the image, and cover it exactly once.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TileHeader {
     /// A hash identifying the scene (and whatever else the caller hashes), as hex digits.
@@ -87,9 +101,44 @@ fn show(r: &Rect) -> String {
 /// [`write_atomic`]).
 ///
 /// # Errors
-/// [`Error::Tiles`] if the header is invalid ([`TileHeader::validate`]) or the image's
-/// size is not the rect's; [`Error::Io`] if the file cannot be written.
+/// As [`check_tile`]; [`Error::Io`] if the file cannot be written.
 pub fn write_tile(path: &Path, header: &TileHeader, image: &Image) -> Result<()> {
+    check_tile(header, image)?;
+    write_atomic(path, |out| write_tile_to(out, header, image))
+}
+
+/// Writes the tile file of [`write_tile`] into `out`, after [`check_tile`].
+///
+/// # Errors
+/// [`io::ErrorKind::InvalidInput`] with [`check_tile`]'s message, or a failure to write.
+pub fn write_tile_to(out: &mut impl Write, header: &TileHeader, image: &Image) -> io::Result<()> {
+    check_tile(header, image).map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e.to_string()))?;
+    write!(
+        out,
+        "{MAGIC}\nscene = {}\nsettings = {}\nimage = {} {}\nrect = {}\npixels = {:016x}\n\n",
+        header.scene,
+        header.settings,
+        header.image_width,
+        header.image_height,
+        show(&header.rect),
+        checksum(image)
+    )?;
+    let mut row = Vec::with_capacity(24 * image.width());
+    for line in image.pixels().chunks_exact(image.width()) {
+        row.clear();
+        row.extend(line.iter().flatten().flat_map(|c| c.to_le_bytes()));
+        out.write_all(&row)?;
+    }
+    Ok(())
+}
+
+/// Checks that `image` can be written as the tile `header` describes: a valid header
+/// ([`TileHeader::validate`]), an image the size of the rect, and no pixel value that
+/// is NaN or negative.
+///
+/// # Errors
+/// [`Error::Tiles`] saying which.
+pub fn check_tile(header: &TileHeader, image: &Image) -> Result<()> {
     header.validate()?;
     let r = &header.rect;
     if (image.width(), image.height()) != (r.width, r.height) {
@@ -102,21 +151,36 @@ pub fn write_tile(path: &Path, header: &TileHeader, image: &Image) -> Result<()>
             r.height
         )));
     }
-    write_atomic(path, |out| {
-        write!(
-            out,
-            "{MAGIC}\nscene = {}\nsettings = {}\nimage = {} {}\nrect = {}\n\n",
-            header.scene,
-            header.settings,
-            header.image_width,
-            header.image_height,
-            show(r)
-        )?;
-        for &c in image.pixels().iter().flatten() {
-            out.write_all(&c.to_le_bytes())?;
-        }
-        Ok(())
-    })
+    check_values(image)
+}
+
+/// FNV-1a (64-bit) of the pixels' bytes as the file stores them.
+fn checksum(image: &Image) -> u64 {
+    image
+        .pixels()
+        .iter()
+        .flatten()
+        .flat_map(|c| c.to_le_bytes())
+        .fold(0xcbf2_9ce4_8422_2325, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+        })
+}
+
+/// Fails on the first NaN or negative value, naming its pixel in the tile.
+fn check_values(image: &Image) -> Result<()> {
+    let bad = image
+        .pixels()
+        .iter()
+        .position(|p| p.iter().any(|c| c.is_nan() || *c < 0.0));
+    match bad {
+        None => Ok(()),
+        Some(i) => Err(Error::Tiles(format!(
+            "pixel ({}, {}) of the tile is {:?}: a render never makes NaN or a negative value",
+            i % image.width(),
+            i / image.width(),
+            image.pixels()[i]
+        ))),
+    }
 }
 
 /// Reads a tile file (see [`parse_tile`]); errors name the file.
@@ -154,7 +218,7 @@ pub fn parse_tile(bytes: &[u8]) -> Result<(TileHeader, Image)> {
             ));
         }
     }
-    let [mut scene, mut settings, mut image, mut rect] = [None::<&str>; 4];
+    let [mut scene, mut settings, mut image, mut rect, mut sum] = [None::<&str>; 5];
     loop {
         let line = lines.next()?;
         if line.is_empty() {
@@ -168,6 +232,7 @@ pub fn parse_tile(bytes: &[u8]) -> Result<(TileHeader, Image)> {
             "settings" => &mut settings,
             "image" => &mut image,
             "rect" => &mut rect,
+            "pixels" => &mut sum,
             _ => return bad(format!("unknown header key {:?}", clip(key))),
         };
         if slot.replace(value).is_some() {
@@ -177,6 +242,16 @@ pub fn parse_tile(bytes: &[u8]) -> Result<(TileHeader, Image)> {
     let missing = |key| Error::Tiles(format!("header key {key:?} is missing"));
     let image = numbers::<2>(image.ok_or_else(|| missing("image"))?, "image", "width height")?;
     let rect = numbers::<4>(rect.ok_or_else(|| missing("rect"))?, "rect", "x y width height")?;
+    let sum = sum.ok_or_else(|| missing("pixels"))?;
+    let sum = u64::from_str_radix(sum, 16)
+        .ok()
+        .filter(|_| sum.len() == 16)
+        .ok_or_else(|| {
+            Error::Tiles(format!(
+                "header key \"pixels\" must be 16 hexadecimal digits, got {:?}",
+                clip(sum)
+            ))
+        })?;
     let header = TileHeader {
         scene: scene.ok_or_else(|| missing("scene"))?.to_string(),
         settings: settings.ok_or_else(|| missing("settings"))?.to_string(),
@@ -212,6 +287,14 @@ pub fn parse_tile(bytes: &[u8]) -> Result<(TileHeader, Image)> {
         .collect();
     let image = Image::from_pixels(w, h, pixels)
         .ok_or_else(|| Error::Tiles("pixel count does not match the rect".into()))?;
+    if checksum(&image) != sum {
+        return bad(format!(
+            "the pixels' checksum is {:016x} but the header says {sum:016x}: the file was \
+             changed or damaged after it was written",
+            checksum(&image)
+        ));
+    }
+    check_values(&image)?;
     Ok((header, image))
 }
 
@@ -264,122 +347,6 @@ fn numbers<const N: usize>(value: &str, key: &str, form: &str) -> Result<[usize;
         None => Ok(out),
         Some(_) => Err(err()),
     }
-}
-
-/// Assembles the whole image from its tiles, after checking that they belong together:
-/// the same scene, settings and image size in every header, each image the size of its
-/// rect, and the rects covering every pixel exactly once. Tiles are named in errors by
-/// their position in `tiles`, counting from 1.
-///
-/// # Errors
-/// [`Error::Tiles`] naming the disagreeing tiles, the overlapping tiles and the rows and
-/// columns they share, or the rows with pixels in no tile.
-pub fn merge_tiles(tiles: &[(TileHeader, Image)]) -> Result<Image> {
-    let bad = |m: String| Err(Error::Tiles(m));
-    let Some((first, _)) = tiles.first() else {
-        return bad("no tiles to merge".into());
-    };
-    let (width, height) = (first.image_width, first.image_height);
-    for (i, (h, image)) in tiles.iter().enumerate() {
-        let n = i + 1;
-        h.validate().map_err(|e| Error::Tiles(format!("tile {n}: {e}")))?;
-        if h.scene != first.scene {
-            return bad(format!(
-                "tile {n} is of scene {} but tile 1 of scene {}",
-                h.scene, first.scene
-            ));
-        }
-        if h.settings != first.settings {
-            return bad(format!(
-                "tile {n} has settings {:?} but tile 1 has {:?}",
-                h.settings, first.settings
-            ));
-        }
-        if (h.image_width, h.image_height) != (width, height) {
-            return bad(format!(
-                "tile {n} is part of a {}×{} image but tile 1 of a {width}×{height} image",
-                h.image_width, h.image_height
-            ));
-        }
-        if (image.width(), image.height()) != (h.rect.width, h.rect.height) {
-            return bad(format!(
-                "tile {n}'s image is {}×{} but its rect {} is {}×{}",
-                image.width(),
-                image.height(),
-                show(&h.rect),
-                h.rect.width,
-                h.rect.height
-            ));
-        }
-    }
-    check_overlaps(tiles)?;
-    check_coverage(tiles, width, height)?;
-    let mut whole = Image::new(width, height)?;
-    for (h, image) in tiles {
-        let r = &h.rect;
-        for (row, src) in image.pixels().chunks_exact(r.width).enumerate() {
-            let start = (r.y + row) * width + r.x;
-            whole.pixels_mut()[start..start + r.width].copy_from_slice(src);
-        }
-    }
-    Ok(whole)
-}
-
-/// Fails on the first two tiles whose rects share a pixel.
-fn check_overlaps(tiles: &[(TileHeader, Image)]) -> Result<()> {
-    let span = |a: usize, len: usize| a..a + len;
-    for (i, (a, _)) in tiles.iter().enumerate() {
-        for (j, (b, _)) in tiles.iter().enumerate().skip(i + 1) {
-            let (a, b) = (&a.rect, &b.rect);
-            let (ax, ay) = (span(a.x, a.width), span(a.y, a.height));
-            let (bx, by) = (span(b.x, b.width), span(b.y, b.height));
-            let cols = ax.start.max(bx.start)..ax.end.min(bx.end);
-            let rows = ay.start.max(by.start)..ay.end.min(by.end);
-            if !cols.is_empty() && !rows.is_empty() {
-                return Err(Error::Tiles(format!(
-                    "tiles {} and {} overlap: both cover rows {rows:?}, columns {cols:?} ({} pixels)",
-                    i + 1,
-                    j + 1,
-                    rows.len() * cols.len()
-                )));
-            }
-        }
-    }
-    Ok(())
-}
-
-/// Fails if some pixel is in no tile, naming the rows that have such pixels. The rects
-/// lie inside the image and do not overlap, so a row is covered when its tiles' widths
-/// add up to the image's width.
-fn check_coverage(tiles: &[(TileHeader, Image)], width: usize, height: usize) -> Result<()> {
-    let mut missing = 0;
-    let mut rows: Vec<std::ops::Range<usize>> = Vec::new();
-    for y in 0..height {
-        let covered: usize = tiles
-            .iter()
-            .map(|(h, _)| &h.rect)
-            .filter(|r| (r.y..r.y + r.height).contains(&y))
-            .map(|r| r.width)
-            .sum();
-        if covered < width {
-            missing += width - covered;
-            match rows.last_mut() {
-                Some(last) if last.end == y => last.end = y + 1,
-                _ => rows.push(y..y + 1),
-            }
-        }
-    }
-    if missing == 0 {
-        return Ok(());
-    }
-    let mut list: Vec<String> = rows.iter().take(4).map(|r| format!("{r:?}")).collect();
-    if rows.len() > 4 {
-        list.push(format!("and {} more ranges", rows.len() - 4));
-    }
-    Err(Error::Tiles(format!(
-        "{missing} pixels are in no tile, in rows {}",
-        list.join(", ")
-    )))
 }
 
 #[cfg(test)]

@@ -7,9 +7,11 @@ use crate::options;
 
 use clap::error::ErrorKind;
 use common::config;
-use options::{Example, MAX_THREADS, Options};
+use options::{Example, Options};
 use proptest::prelude::*;
 use raytrace::advice::Precision;
+// The limit the examples share with the binary.
+use raytrace::cli::MAX_THREADS;
 use raytrace::image::Encoding;
 use std::path::PathBuf;
 

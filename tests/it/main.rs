@@ -14,6 +14,7 @@ mod parts;
 #[path = "../../examples/scenes/mod.rs"]
 mod scenes;
 
+mod adversarial_files;
 mod adversarial_scenes;
 mod advice;
 mod bad_input;
@@ -34,6 +35,7 @@ mod lambertian_chi2;
 mod lights;
 mod meshes;
 mod mis_unbiased;
+mod outputs;
 mod random_scenes;
 mod reference;
 mod reflection;

@@ -2,11 +2,8 @@
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use raytrace::RenderSettings;
+use raytrace::cli::parse_threads;
 use std::path::PathBuf;
-
-/// Most worker threads accepted: far more than the cores of any machine this runs on,
-/// while starting many thousands would take minutes or exhaust the system.
-pub const MAX_THREADS: usize = 256;
 
 /// Renders scene files (TOML; the format: docs/SCENE_FORMAT.md).
 #[derive(Debug, Parser)]
@@ -57,9 +54,10 @@ pub struct RenderArgs {
     #[arg(long, value_name = "P")]
     pub precision: Option<PrecisionArg>,
     /// Worker threads, 1 to 256 [default: all cores]
-    #[arg(long, value_name = "T", value_parser = clap::value_parser!(u16).range(1..=MAX_THREADS as i64))]
-    pub threads: Option<u16>,
-    /// The output file [default: the scene's name and the settings, in the current folder]
+    #[arg(long, value_name = "T", value_parser = parse_threads)]
+    pub threads: Option<usize>,
+    /// The output file, `-` for standard output; missing folders are made [default: the
+    /// scene's name and the settings, in the current folder]
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// The output format [default: from --out's extension, else png]
@@ -82,7 +80,7 @@ pub struct MergeArgs {
     /// The tile files, in any order.
     #[arg(required = true)]
     pub tiles: Vec<PathBuf>,
-    /// The image to write.
+    /// The image to write, `-` for standard output; missing folders are made.
     #[arg(long, value_name = "FILE")]
     pub out: PathBuf,
     /// The output format [default: from --out's extension]
@@ -91,6 +89,9 @@ pub struct MergeArgs {
     /// How colour is stored in PPM and PNG files
     #[arg(long, value_name = "E", default_value = "srgb")]
     pub encoding: EncodingArg,
+    /// Nothing on stderr while the image is written
+    #[arg(long)]
+    pub quiet: bool,
 }
 
 /// `--precision`.

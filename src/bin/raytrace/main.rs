@@ -10,9 +10,11 @@
 //!
 //! Exit codes: 0 on success, 1 when the work fails (a bad scene, an unwritable file), 2 for
 //! a usage error (an option's value the scene cannot take included: `--width 41` for the
-//! spec's 2:1 camera), 130 when interrupted (no temporary file is left behind).
+//! spec's 2:1 camera), 128 + the signal's number when SIGINT (130), SIGTERM (143) or
+//! SIGHUP (129) stops it (no temporary file is left behind; `raytrace::cli`).
 
 mod args;
+mod inputs;
 mod inspect;
 mod output;
 mod render;
@@ -27,14 +29,16 @@ fn main() -> ExitCode {
     if let Err(message) = output::check_usage(&cli.command) {
         Cli::command().error(ErrorKind::ArgumentConflict, message).exit();
     }
-    let result = raytrace::image::on_interrupt_remove_temporary_files()
-        .map_err(Failure::from)
-        .and_then(|()| match &cli.command {
-            Command::Render(args) => render::run(args),
-            Command::Check { scene } => inspect::check(scene).map_err(Failure::from),
-            Command::Advise { scene } => inspect::advise(scene).map_err(Failure::from),
-            Command::Merge(args) => output::merge(args).map_err(Failure::from),
-        });
+    if let Err(e) = raytrace::cli::clean_up_on_signals("raytrace") {
+        eprintln!("raytrace: error: cannot handle signals (SIGINT, SIGTERM, SIGHUP): {e}");
+        return ExitCode::FAILURE;
+    }
+    let result = match &cli.command {
+        Command::Render(args) => render::run(args),
+        Command::Check { scene } => inspect::check(scene).map_err(Failure::from),
+        Command::Advise { scene } => inspect::advise(scene).map_err(Failure::from),
+        Command::Merge(args) => output::merge(args).map_err(Failure::from),
+    };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::Usage(message)) => Cli::command().error(ErrorKind::ValueValidation, message).exit(),

@@ -1,22 +1,32 @@
-//! Where the results go: file names, formats, writing, merging tiles, the thread pool.
+//! Where the results go: file names, formats, writing (to a file or to standard output),
+//! merging tiles.
 
-use crate::args::{Command, EncodingArg, Format, MAX_THREADS, MergeArgs, RenderArgs};
+use crate::args::{Command, EncodingArg, Format, MergeArgs, RenderArgs};
+use crate::inputs;
 use raytrace::advice::Precision;
+use raytrace::cli::{check_output, set_activity, write_file};
 use raytrace::image::{
-    Encoding, TileHeader, check_writable, merge_tiles, read_tile, write_exr, write_pfm, write_png, write_ppm,
-    write_tile,
+    Encoding, TileHeader, merge_tiles, read_tile, write_exr, write_exr_to, write_pfm, write_pfm_to,
+    write_png, write_png_to, write_ppm, write_ppm_to, write_tile, write_tile_to,
 };
 use raytrace::scene_file::{RenderOptions, SceneFile};
 use raytrace::{Error, Image, Result};
+use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
+
+pub use raytrace::cli::pool;
 
 /// A file to write and how.
 pub struct Target {
-    /// The file.
+    /// The file; `-` for standard output.
     pub path: PathBuf,
     /// Its image format; `None` for a tile file.
     format: Option<Format>,
     encoding: Encoding,
+    /// The files the command reads, which the output must not replace.
+    inputs: Vec<PathBuf>,
+    /// Show a spinner on stderr while writing (when it is a terminal).
+    spinner: bool,
 }
 
 impl Target {
@@ -31,32 +41,157 @@ impl Target {
             .out
             .clone()
             .unwrap_or_else(|| default_name(args, file, precision, format));
+        set_activity(format!(
+            "rendering {} for {}",
+            file.path().display(),
+            shown(&path)
+        ));
         Ok(Self {
             path,
             format,
             encoding,
+            inputs: inputs::of_scene(file),
+            spinner: !args.quiet,
         })
     }
 
-    /// Fails now, before any render, if the file's folder cannot be written.
+    /// Fails now, before any render, if the output cannot be written: it is one of the
+    /// inputs, a folder or a device it may not replace, or its folder is not writable
+    /// (standard output: a terminal, which cannot show an image).
     pub fn check_writable(&self) -> Result<()> {
-        check_writable(folder(&self.path))
+        let refuse = |message: String| Error::Io {
+            path: shown(&self.path).into(),
+            source: io::Error::new(io::ErrorKind::InvalidInput, message),
+        };
+        let out = if self.is_stdout() {
+            if io::stdout().is_terminal() {
+                return Err(refuse(
+                    "--out - writes the image here, and it is a terminal: redirect it to a file or a pipe"
+                        .into(),
+                ));
+            }
+            // Standard output redirected into an input would destroy it as surely.
+            Path::new("/dev/stdout")
+        } else {
+            check_output(&self.path)?;
+            &self.path
+        };
+        match inputs::overwritten(out, &self.inputs) {
+            Some(input) => Err(refuse(format!(
+                "--out names {}, which this command reads: refusing to overwrite an input",
+                input.display()
+            ))),
+            None => Ok(()),
+        }
     }
 
     /// Writes `image` in the target's format.
     pub fn write_image(&self, image: &Image) -> Result<()> {
-        match self.format {
-            Some(Format::Ppm) => write_ppm(&self.path, &image.to_u16(self.encoding)),
-            Some(Format::Png) => write_png(&self.path, &image.to_u16(self.encoding), self.encoding),
-            Some(Format::Exr) => write_exr(&self.path, image),
-            Some(Format::Pfm) => write_pfm(&self.path, image),
-            None => Err(usage("a tile target holds a tile, not an image")),
-        }
+        let format = self
+            .format
+            .ok_or_else(|| usage("a tile target holds a tile, not an image"))?;
+        let samples = || image.to_u16(self.encoding);
+        let e = self.encoding;
+        self.write(format.extension(), |out| match (format, out) {
+            (Format::Ppm, Out::File(p)) => write_ppm(p, &samples()),
+            (Format::Png, Out::File(p)) => write_png(p, &samples(), e),
+            (Format::Exr, Out::File(p)) => write_exr(p, image),
+            (Format::Pfm, Out::File(p)) => write_pfm(p, image),
+            (Format::Ppm, Out::Stdout(w)) => stdout(write_ppm_to(w, &samples())),
+            (Format::Png, Out::Stdout(w)) => stdout(write_png_to(w, &samples(), e)),
+            (Format::Exr, Out::Stdout(w)) => {
+                // EXR ends in a table of offsets: made in memory, where it can seek.
+                let mut bytes = io::Cursor::new(Vec::new());
+                stdout(write_exr_to(&mut bytes, image).and_then(|()| w.write_all(bytes.get_ref())))
+            }
+            (Format::Pfm, Out::Stdout(w)) => stdout(write_pfm_to(w, image)),
+        })
     }
 
     /// Writes a tile file.
     pub fn write_tile(&self, header: &TileHeader, image: &Image) -> Result<()> {
-        write_tile(&self.path, header, image)
+        self.write("tile", |out| match out {
+            Out::File(p) => write_tile(p, header, image),
+            Out::Stdout(w) => stdout(write_tile_to(w, header, image)),
+        })
+    }
+
+    /// Prints `line` where the user reads it: stdout, or stderr when the image goes to
+    /// stdout.
+    pub fn say(&self, line: &str) {
+        if self.is_stdout() {
+            eprintln!("{line}");
+        } else {
+            println!("{line}");
+        }
+    }
+
+    /// The output's name for messages (`standard output` for `-`).
+    pub fn name(&self) -> String {
+        shown(&self.path)
+    }
+
+    fn is_stdout(&self) -> bool {
+        self.path == Path::new("-")
+    }
+
+    /// Runs `write` on the file (missing folders made, and removed again on failure) or
+    /// on standard output, with a spinner saying what is being written.
+    fn write(&self, what: &str, write: impl FnOnce(Out) -> Result<()>) -> Result<()> {
+        set_activity(format!("writing {}", shown(&self.path)));
+        let spinner = Spinner::start(self.spinner, &format!("writing {} ({what})", shown(&self.path)));
+        let result = if self.is_stdout() {
+            let mut out = io::BufWriter::new(io::stdout().lock());
+            write(Out::Stdout(&mut out)).and_then(|()| stdout(out.flush()))
+        } else {
+            write_file(&self.path, |p| write(Out::File(p)))
+        };
+        spinner.finish();
+        result
+    }
+}
+
+/// Where [`Target::write`] writes.
+enum Out<'a> {
+    File(&'a Path),
+    Stdout(&'a mut io::BufWriter<io::StdoutLock<'static>>),
+}
+
+/// A failure to write standard output, named.
+fn stdout(result: io::Result<()>) -> Result<()> {
+    result.map_err(|source| Error::Io {
+        path: "standard output".into(),
+        source,
+    })
+}
+
+/// `path` for messages: `-` is standard output.
+fn shown(path: &Path) -> String {
+    if path == Path::new("-") {
+        "standard output".into()
+    } else {
+        path.display().to_string()
+    }
+}
+
+/// A spinner on stderr while an image is encoded and written (a large PNG takes seconds),
+/// shown only on a terminal.
+struct Spinner(Option<indicatif::ProgressBar>);
+
+impl Spinner {
+    fn start(wanted: bool, message: &str) -> Self {
+        if !wanted || !io::stderr().is_terminal() {
+            return Self(None);
+        }
+        let bar = indicatif::ProgressBar::new_spinner().with_message(message.to_string());
+        bar.enable_steady_tick(std::time::Duration::from_millis(100));
+        Self(Some(bar))
+    }
+
+    fn finish(self) {
+        if let Some(bar) = self.0 {
+            bar.finish_and_clear();
+        }
     }
 }
 
@@ -67,7 +202,14 @@ pub fn merge(args: &MergeArgs) -> Result<()> {
         path: args.out.clone(),
         format: Some(format),
         encoding: encoding(args.encoding),
+        inputs: args.tiles.clone(),
+        spinner: !args.quiet,
     };
+    set_activity(format!(
+        "merging {} tiles for {}",
+        args.tiles.len(),
+        shown(&target.path)
+    ));
     target.check_writable()?;
     let tiles = args
         .tiles
@@ -76,25 +218,14 @@ pub fn merge(args: &MergeArgs) -> Result<()> {
         .collect::<Result<Vec<_>>>()?;
     let image = merge_tiles(&tiles)?;
     target.write_image(&image)?;
-    println!(
+    target.say(&format!(
         "wrote {}: {}×{} pixels from {} tiles",
-        target.path.display(),
+        shown(&target.path),
         image.width(),
         image.height(),
         tiles.len()
-    );
+    ));
     Ok(())
-}
-
-/// The worker threads asked for (all cores if none).
-pub fn pool(threads: Option<u16>) -> Result<rayon::ThreadPool> {
-    let mut pool = rayon::ThreadPoolBuilder::new();
-    if let Some(t) = threads {
-        debug_assert!(usize::from(t) <= MAX_THREADS, "clap checks the range");
-        pool = pool.num_threads(usize::from(t));
-    }
-    pool.build()
-        .map_err(|e| Error::InvalidSettings(format!("cannot start the worker threads: {e}")))
 }
 
 /// The settings that make an image what it is, in words: the tile files carry them, and
@@ -106,14 +237,7 @@ pub fn describe(r: &RenderOptions, precision: Precision) -> String {
     )
 }
 
-/// FNV-1a (64-bit) of the scene as rendered, after the overrides: tiles of different
-/// scenes are told apart. (A mesh is named by its path; its contents are not hashed.)
-pub fn scene_hash(file: &SceneFile) -> String {
-    let hash = file.to_toml().bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-    });
-    format!("{hash:016x}")
-}
+pub use inputs::scene_hash;
 
 /// The name of a render without `--out`: the scene's, then every setting that changes the
 /// file's bytes (`-linear` only where the format stores sRGB otherwise), so renders with
@@ -159,7 +283,7 @@ pub fn check_usage(command: &Command) -> Result<(), String> {
                 return Err("--format does not apply to --tile: a tile file holds linear f64 values".into());
             }
             match &args.out {
-                Some(out) if !has_extension(out, TILE_EXTENSION) => Err(format!(
+                Some(out) if out != Path::new("-") && !has_extension(out, TILE_EXTENSION) => Err(format!(
                     "--tile writes a tile file, not an image: name it .{TILE_EXTENSION} (got --out {}); \
                      `raytrace merge` makes the image from the tiles",
                     out.display()
@@ -213,14 +337,6 @@ fn encoding(e: EncodingArg) -> Encoding {
     }
 }
 
-/// The folder a file goes into (`.` for a bare name).
-fn folder(path: &Path) -> &Path {
-    match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    }
-}
-
 fn usage(message: &str) -> Error {
     Error::InvalidSettings(message.into())
 }
@@ -243,7 +359,5 @@ mod tests {
         );
         assert!(choose_format(Some(Format::Pfm), p("a.png").as_deref(), Format::Png).is_err());
         assert!(choose_format(None, p("a.jpg").as_deref(), Format::Png).is_err());
-        assert_eq!(folder(Path::new("x.png")), Path::new("."));
-        assert_eq!(folder(Path::new("out/x.png")), Path::new("out"));
     }
 }

@@ -4,8 +4,9 @@ use crate::Failure;
 use crate::args::{PrecisionArg, RenderArgs};
 use crate::output::{self, Target};
 use raytrace::advice::Precision;
+use raytrace::cli::check_memory;
 use raytrace::error::Field;
-use raytrace::image::{TileHeader, check_memory};
+use raytrace::image::TileHeader;
 use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
 use raytrace::{Camera, Error, Float, Rect, Render, Renderer, Result};
 
@@ -34,6 +35,8 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
     };
     let target = Target::for_render(args, file, precision)?;
     target.check_writable()?;
+    // Hashed before the build reads the meshes: a tile names the files it was made from.
+    let hash = args.tile.map(|_| output::scene_hash(file));
     let pool = output::pool(args.threads)?;
     let (render, camera) = pool.install(|| match precision {
         Precision::F32 => render_in::<f32>(file, args),
@@ -44,7 +47,7 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
         None => target.write_image(&render.image)?,
         Some(_) => {
             let header = TileHeader {
-                scene: output::scene_hash(file),
+                scene: hash.transpose()?.unwrap_or_default(),
                 settings: settings.clone(),
                 image_width: camera.0,
                 image_height: camera.1,
@@ -53,13 +56,13 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
             target.write_tile(&header, &render.image)?;
         }
     }
-    println!(
+    target.say(&format!(
         "wrote {}: {}×{} pixels, {settings}: {}",
-        target.path.display(),
+        target.name(),
         render.image.width(),
         render.image.height(),
         render.stats
-    );
+    ));
     Ok(())
 }
 

@@ -56,15 +56,38 @@ fn split() -> (String, Vec<u8>) {
     )
 }
 
+/// FNV-1a 64, written out again from its definition.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x100_0000_01b3);
+    }
+    h
+}
+
+/// `head` with its `pixels` key made the checksum of `data`, then `data`: a file whose
+/// pixels were changed by someone who also fixed the checksum.
+fn resummed(head: &str, data: &[u8]) -> Vec<u8> {
+    let start = head.find("pixels = ").unwrap() + 9;
+    let head = format!("{}{:016x}{}", &head[..start], fnv1a(data), &head[start + 16..]);
+    [head.as_bytes(), data].concat()
+}
+
 #[test]
 fn writes_the_documented_format() {
-    let mut want = b"raytrace-tile 1\nscene = 00ff1234abcd\n\
-        settings = spp=4 max_depth=10 seed=0 precision=f64 a = b\n\
-        image = 3 4\nrect = 1 2 2 1\n\n"
-        .to_vec();
+    let mut data = Vec::new();
     for c in image().pixels().iter().flatten() {
-        want.extend_from_slice(&c.to_le_bytes());
+        data.extend_from_slice(&c.to_le_bytes());
     }
+    let mut want = format!(
+        "raytrace-tile 2\nscene = 00ff1234abcd\n\
+         settings = spp=4 max_depth=10 seed=0 precision=f64 a = b\n\
+         image = 3 4\nrect = 1 2 2 1\npixels = {:016x}\n\n",
+        fnv1a(&data)
+    )
+    .into_bytes();
+    want.extend(data);
     assert_eq!(file_bytes(), want);
 }
 
@@ -105,8 +128,12 @@ fn bad_files_are_refused_with_a_reason() {
     let cases: Vec<(Vec<u8>, &str)> = vec![
         (b"P6\n".to_vec(), "not a raytrace tile file"),
         (
-            with(&head.replace("tile 1", "tile 2"), data),
-            "unsupported tile format version \"2\"",
+            with(&head.replace("tile 2", "tile 1"), data),
+            "unsupported tile format version \"1\"",
+        ),
+        (
+            with(&head.replacen("pixels = ", "pixels = 0", 1), data),
+            "\"pixels\" must be 16 hexadecimal digits",
         ),
         (
             with(&head.replace("scene = 00ff1234abcd\n", ""), data),
@@ -158,6 +185,40 @@ fn bad_files_are_refused_with_a_reason() {
 }
 
 #[test]
+fn damaged_pixels_are_refused() {
+    let (head, data) = split();
+    // Every single flipped bit of the pixels is caught by the checksum.
+    for at in 0..data.len() {
+        for bit in 0..8 {
+            let mut bad = data.clone();
+            bad[at] ^= 1 << bit;
+            let msg = parse_tile(&[head.as_bytes(), &bad].concat())
+                .unwrap_err()
+                .to_string();
+            assert!(msg.contains("changed or damaged"), "byte {at} bit {bit}: {msg}");
+        }
+    }
+    // A NaN or a negative value with a checksum that matches is refused too.
+    let nan = [&data[..8], &f64::NAN.to_le_bytes(), &data[16..]].concat();
+    let msg = parse_tile(&resummed(&head, &nan)).unwrap_err().to_string();
+    assert!(msg.contains("pixel (0, 0)") && msg.contains("NaN"), "{msg}");
+    let negative = [&data[..40], &(-2.5f64).to_le_bytes()].concat();
+    let msg = parse_tile(&resummed(&head, &negative)).unwrap_err().to_string();
+    assert!(msg.contains("pixel (1, 0)") && msg.contains("-2.5"), "{msg}");
+    // The helper makes a file that reads when the values are good.
+    assert!(parse_tile(&resummed(&head, &data)).is_ok());
+    let missing = head
+        .lines()
+        .filter(|l| !l.starts_with("pixels"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let msg = parse_tile(&[format!("{missing}\n\n").as_bytes(), &data].concat())
+        .unwrap_err()
+        .to_string();
+    assert!(msg.contains("\"pixels\" is missing"), "{msg}");
+}
+
+#[test]
 fn read_errors_name_the_file() {
     let path = temp_path("garbage.rtile");
     std::fs::write(&path, "hello\n").unwrap();
@@ -183,6 +244,9 @@ fn writing_checks_the_header_and_the_size() {
         msg.contains("the image is 1×1 but the rect 1 2 2 1 is 2×1"),
         "{msg}"
     );
+    let nan = Image::from_pixels(2, 1, vec![[0.0; 3], [0.0, f64::NAN, 0.0]]).unwrap();
+    let msg = write_tile(&path, &header(), &nan).unwrap_err().to_string();
+    assert!(msg.contains("pixel (1, 0)") && msg.contains("NaN"), "{msg}");
     assert!(!path.exists());
 }
 
@@ -206,5 +270,17 @@ proptest! {
         bytes[at % n] = byte;
         bytes.truncate(n - cut % n);
         let _ = parse_tile(&bytes);
+    }
+
+    /// A tile with one byte changed anywhere is refused, or reads as the tile written
+    /// (a changed header value that still parses, such as the scene hash, is for the
+    /// merge to catch).
+    #[test]
+    fn a_changed_pixel_byte_never_reads(at in 0usize..48, byte in any::<u8>()) {
+        let (head, data) = split();
+        let mut bad = data.clone();
+        bad[at] = byte;
+        let read = parse_tile(&[head.as_bytes(), &bad].concat());
+        prop_assert_eq!(read.is_ok(), byte == data[at]);
     }
 }

@@ -1,8 +1,8 @@
 //! Whether the machine has the memory for an image, checked before a long render
 //! allocates it rather than failing (or swapping) partway.
 
-use super::check_size;
 use crate::error::{Error, Result};
+use crate::image::check_size;
 
 /// Bytes a render of one pixel holds at its peak: the linear `[f64; 3]` (24 bytes) and
 /// its 16-bit copy for PPM or PNG (6 bytes).
