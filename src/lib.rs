@@ -53,6 +53,7 @@ pub mod sampling;
 pub mod scene;
 pub mod scene_file;
 pub mod shape;
+pub mod texture;
 mod validate;
 pub mod vec3;
 
