@@ -18,20 +18,20 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     /// `Σ f(wo, wi)·|cos θᵢ| · I/d²` over the lights a shadow ray reaches unblocked,
     /// computed as `(colour ∘ I)·(scale/d²)` from the material's [`Eval`](crate::material::Eval)
     /// (for the Lambertian `(A/π ∘ I)·(cos θ/d²)`, the specification's extra).
-    pub(super) fn direct_light(&mut self, hit: Hit<F>, material: &M, wo: Vec3<F>) -> Color<F> {
+    pub(super) fn direct_light(&mut self, hit: &Hit<F>, material: &M, wo: Vec3<F>) -> Color<F> {
         let mut sum = Color::zero();
         // Shadow rays leave on the normal's side; a light on the other side (seen through
         // a transmitting lobe) gets an origin on that side.
         let above = hit.offset_origin(hit.normal);
         let transmits = material.lobes().contains(Lobes::TRANSMISSION);
         for light in self.scene.lights() {
-            let Some((origin, dir, dist2)) = toward(&hit, above, light.position(), transmits) else {
+            let Some((origin, dir, dist2)) = toward(hit, above, light.position(), transmits) else {
                 continue;
             };
             if !hit.sides_agree(dir) {
                 continue;
             }
-            let Some(f) = material.eval(&hit, wo, dir) else {
+            let Some(f) = material.eval(hit, wo, dir) else {
                 continue;
             };
             self.rays += 1;
@@ -134,7 +134,9 @@ fn toward<F: Float>(
 }
 
 /// [`toward`] for a target behind the surface (seen through a transmitting lobe).
-#[inline]
+// Always inlined: out of line it takes the hit by reference, which keeps every hit in
+// memory.
+#[inline(always)]
 fn from_below<F: Float>(hit: &Hit<F>, dir: Vec3<F>, target: Vec3<F>) -> Option<(Vec3<F>, Vec3<F>, F)> {
     let below = hit.offset_origin(dir);
     let to = target - below;

@@ -178,7 +178,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         }
         let lit = material.lobes().has_non_delta();
         if lit && !self.scene.lights().is_empty() {
-            direct = self.direct_light(hit, material, wo) + direct;
+            direct = self.direct_light(&hit, material, wo) + direct;
         }
         // An emitter sample here stands for a scattered ray meeting it at depth + 1.
         let sampled = lit && self.samples_emitters(emitters, depth);

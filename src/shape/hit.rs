@@ -167,8 +167,16 @@ impl<F: Float> Hit<F> {
     /// [`Material`](crate::Material)'s "Shading normals").
     #[inline]
     pub fn sides_agree(&self, w: Vec3<F>) -> bool {
-        !self.smooth || (w.dot(self.normal) > F::zero()) == (w.dot(self.shading_normal) > F::zero())
+        !self.smooth || same_side(self.normal, self.shading_normal, w)
     }
+}
+
+/// Whether `a` and `b` put `w` on the same side: out of line, so that a hit with one
+/// normal (every sphere, plane and flat triangle) never computes the two dot products
+/// (inlined, the compiler computed them branch-free for every light and every bounce).
+#[inline(never)]
+fn same_side<F: Float>(a: Vec3<F>, b: Vec3<F>, w: Vec3<F>) -> bool {
+    (w.dot(a) > F::zero()) == (w.dot(b) > F::zero())
 }
 
 /// A flat surface's [`Surface`] at `t` along `ray`: the point `O + tD` with
