@@ -104,12 +104,23 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
         ..RenderOptions::default()
     };
     file.camera = e.camera.clone();
-    file.background = match *e.scene.background() {
-        Background::Solid(c) => BackgroundSpec::Solid { color: c.to_f64() },
+    let light = e.scene.background_sampled();
+    file.background = match e.scene.background() {
+        Background::Solid(c) => BackgroundSpec::Solid {
+            color: c.to_f64(),
+            light,
+        },
         Background::Sky { horizon, zenith } => BackgroundSpec::Sky {
             horizon: horizon.to_f64(),
             zenith: zenith.to_f64(),
+            light,
         },
+        Background::Map { .. } => {
+            return Err(raytrace::Error::invalid(
+                raytrace::error::Field::EnvironmentMap,
+                "an environment map's image has no file name here",
+            ));
+        }
     };
     let mut named: Vec<(MaterialKind<f64>, String)> = Vec::new();
     for o in e.scene.objects() {

@@ -5,6 +5,10 @@
 //! precision changes a path. The warps that turn uniform numbers into directions are
 //! pure functions of those numbers, testable without an RNG.
 
+mod piecewise;
+
+pub use piecewise::{Distribution1D, Distribution2D};
+
 use crate::float::{Float, lit};
 use crate::vec3::Vec3;
 use rand::Rng;

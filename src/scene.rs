@@ -42,6 +42,7 @@ pub struct Scene<F, S, M> {
     objects: Vec<Object<S, M>>,
     lights: Vec<PointLight<F>>,
     background: Background<F>,
+    background_sampled: bool,
     acceleration: Acceleration,
     index: OnceLock<Index<F>>,
     emitters: OnceLock<Emitters>,
@@ -83,7 +84,8 @@ impl<F: Float> EnumScene<F> {
     /// behind a trait object. It renders to the same bytes, only slower.
     #[must_use]
     pub fn to_dyn(&self) -> DynScene<F> {
-        let mut scene = DynScene::new(self.background);
+        let mut scene = DynScene::new(self.background.clone());
+        scene.set_background_sampled(self.background_sampled);
         scene.set_acceleration(self.acceleration);
         for o in &self.objects {
             let shape: Box<dyn Hittable<F> + Send + Sync> = match &o.shape {
@@ -114,6 +116,7 @@ impl<F: Float, S, M> Scene<F, S, M> {
             objects: Vec::new(),
             lights: Vec::new(),
             background,
+            background_sampled: false,
             acceleration: Acceleration::Auto,
             index: OnceLock::new(),
             emitters: OnceLock::new(),
@@ -163,6 +166,24 @@ impl<F: Float, S, M> Scene<F, S, M> {
     /// The background.
     pub fn background(&self) -> &Background<F> {
         &self.background
+    }
+
+    /// Makes the background a light (`true`) or only what escaping rays see (`false`, the
+    /// default: the specification's sky). As a light it is drawn from at every surface
+    /// that can be lit (next-event estimation, weighed against the scattered ray by
+    /// multiple importance sampling) and, like every light then, counts on paths of at
+    /// most `max_depth` segments: a ray escaping after `max_depth` bounces brings back
+    /// black, and point lights too are sampled only where a ray from there would still
+    /// count. Emitters, point lights and the background then all follow one rule, which is
+    /// also Mitsuba 3's `max_depth`.
+    pub fn set_background_sampled(&mut self, sampled: bool) -> &mut Self {
+        self.background_sampled = sampled;
+        self
+    }
+
+    /// Whether the background is a light ([`Scene::set_background_sampled`]).
+    pub fn background_sampled(&self) -> bool {
+        self.background_sampled
     }
 }
 
@@ -234,6 +255,7 @@ impl<F: Float> EnumScene<F> {
     /// part (shapes, materials, lights, background) works the same way.
     pub fn cast<G: Float>(&self) -> crate::error::Result<EnumScene<G>> {
         let mut out = EnumScene::new(self.background.cast()?);
+        out.set_background_sampled(self.background_sampled);
         out.set_acceleration(self.acceleration);
         for o in &self.objects {
             out.add(o.shape.cast()?, o.material.cast()?);

@@ -166,17 +166,20 @@ impl SceneFile {
         &self.path
     }
 
-    /// The other files the scene is made from: each mesh's file, as [`SceneFile::build`]
-    /// finds it (relative to the scene file's folder), in the order of `[[objects]]`.
-    pub fn mesh_files(&self) -> Vec<PathBuf> {
+    /// The other files the scene is made from, as [`SceneFile::build`] finds them
+    /// (relative to the scene file's folder): the environment map's, then each mesh's in
+    /// the order of `[[objects]]`.
+    pub fn input_files(&self) -> Vec<PathBuf> {
         let folder = self.path.parent().unwrap_or(Path::new(""));
-        self.objects
-            .iter()
-            .filter_map(|o| match o {
-                ObjectSpec::Mesh { file, .. } => Some(folder.join(file)),
-                _ => None,
-            })
-            .collect()
+        let map = match &self.background {
+            BackgroundSpec::Envmap { file, .. } => Some(folder.join(file)),
+            _ => None,
+        };
+        let meshes = self.objects.iter().filter_map(|o| match o {
+            ObjectSpec::Mesh { file, .. } => Some(folder.join(file)),
+            _ => None,
+        });
+        map.into_iter().chain(meshes).collect()
     }
 
     /// The `[render]` options.

@@ -33,7 +33,7 @@ pub struct Case {
 
 /// `scene` moved by `offset` along every axis (spheres only: the study's scenes).
 fn translated(scene: &EnumScene<f64>, offset: f64) -> raytrace::Result<EnumScene<f64>> {
-    let mut out = EnumScene::new(*scene.background());
+    let mut out = EnumScene::new(scene.background().clone());
     for o in scene.objects() {
         let ShapeKind::Sphere(s) = o.shape else {
             unreachable!("the translated scenes hold spheres only")

@@ -131,7 +131,7 @@ pub type StudyScene<F> = Scene<F, StudyShape<F>, MaterialKind<F>>;
 /// `scene` with every sphere intersected the textbook way; other shapes, the materials,
 /// lights, background and acceleration unchanged.
 pub fn to_textbook<F: Float>(scene: &EnumScene<F>) -> StudyScene<F> {
-    let mut out = StudyScene::new(*scene.background());
+    let mut out = StudyScene::new(scene.background().clone());
     out.set_acceleration(scene.acceleration());
     for o in scene.objects() {
         let shape = match &o.shape {

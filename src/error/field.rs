@@ -51,6 +51,12 @@ pub enum Field {
     SkyHorizon,
     /// [`Background::sky`](crate::Background::sky)'s colour straight up.
     SkyZenith,
+    /// An [`EnvironmentMap`](crate::background::EnvironmentMap)'s image (its size, its texels).
+    EnvironmentMap,
+    /// An [`EnvironmentMap`](crate::background::EnvironmentMap)'s scale.
+    EnvironmentScale,
+    /// [`Background::map`](crate::Background::map)'s rotation.
+    EnvironmentRotation,
     /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s eye, `from`.
     CameraFrom,
     /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s target, `at`.
@@ -108,6 +114,9 @@ impl Field {
             Self::BackgroundColor => "background colour",
             Self::SkyHorizon => "sky horizon colour",
             Self::SkyZenith => "sky zenith colour",
+            Self::EnvironmentMap => "environment map",
+            Self::EnvironmentScale => "environment map scale",
+            Self::EnvironmentRotation => "environment map rotation",
             Self::CameraFrom => "camera position",
             Self::CameraAt => "camera target",
             Self::CameraView => "camera view direction (from − at)",

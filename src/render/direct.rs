@@ -42,19 +42,22 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         sum
     }
 
-    /// One sample of the light the emitters send to `hit`, seen from `wo`, weighted
-    /// against the scattered ray that could find the same light:
+    /// One sample of the light the emitters (and a background that is a light) send to
+    /// `hit`, seen from `wo`, weighted against the scattered ray that could find the same
+    /// light:
     ///
-    /// `L = f·|cos θᵢ| · L_e · w / p_e`, `p_e = P_k·p_ω`, `w = p_e²/(p_e² + p_s²)`,
+    /// `L = f·|cos θᵢ| · L_e · w / p_e`, `p_e = P·p_ω`, `w = p_e²/(p_e² + p_s²)`,
     ///
-    /// for emitter `k` chosen with probability `P_k` ([`Emitters::choose`]), a point of it
-    /// drawn with density `p_ω` per solid angle ([`Hittable::sample`](crate::Hittable::sample)),
-    /// and `p_s` the material's [`pdf`](Material::pdf) of that direction; 0 if a shadow
-    /// ray finds anything in between, or the emitter shows the hit its back.
+    /// for a light chosen with probability `P` (the background with the tracer's `sky`,
+    /// else emitter `k` with `(1 − sky)·P_k`, [`Emitters::choose`]), a direction toward it
+    /// drawn with density `p_ω` per solid angle ([`Hittable::sample`](crate::Hittable::sample),
+    /// [`Background::sample`](crate::Background::sample)), and `p_s` the material's
+    /// [`pdf`](Material::pdf) of that direction; 0 if a shadow ray finds anything in
+    /// between, or an emitter shows the hit its back.
     ///
     /// Always draws four numbers (one to choose, three for the point), so the random
     /// stream does not depend on decisions f32 and f64 may take differently.
-    pub(super) fn sample_emitter<R>(
+    pub(super) fn sample_light<R>(
         &mut self,
         hit: Hit<F>,
         material: &M,
@@ -68,7 +71,11 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     {
         let choice = uniform(rng);
         let u = [uniform(rng), uniform(rng), uniform(rng)];
-        let (index, chosen) = emitters.choose(choice);
+        if choice < self.sky {
+            return self.sample_background(&hit, material, wo, [u[0], u[1]]);
+        }
+        // The same `choice` as without a background (`sky = 0`): `(c − 0)/(1 − 0) = c`.
+        let (index, chosen) = emitters.choose((choice - self.sky) / (1.0 - self.sky));
         let object = &self.scene.objects()[index];
         let Some(emission) = object.material.emits() else {
             return Color::zero();
@@ -82,7 +89,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
             return Color::zero();
         };
         let radiance = emission.toward(dir.dot(sample.normal) < F::zero());
-        let light_pdf = F::from_f64(chosen) * sample.pdf;
+        let light_pdf = F::from_f64((1.0 - self.sky) * chosen) * sample.pdf;
         if radiance == Color::zero() || !(light_pdf > F::zero() && light_pdf.is_finite()) {
             return Color::zero();
         }
@@ -106,6 +113,37 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         }
         let weight = power_heuristic(light_pdf, material.pdf(&hit, wo, dir));
         f.colour * radiance * (f.scale * weight / light_pdf)
+    }
+
+    /// [`sample_light`](Self::sample_light)'s background branch: a direction drawn from the
+    /// background by its own density, the light it sends if no shadow ray to infinity is
+    /// blocked.
+    fn sample_background(&mut self, hit: &Hit<F>, material: &M, wo: Vec3<F>, u: [f64; 2]) -> Color<F> {
+        let background = self.scene.background();
+        let Some((dir, pdf)) = background.sample(u) else {
+            return Color::zero();
+        };
+        let light_pdf = F::from_f64(self.sky) * pdf;
+        let transmits = material.lobes().contains(Lobes::TRANSMISSION);
+        let origin = if dir.dot(hit.normal) >= F::zero() {
+            hit.offset_origin(hit.normal)
+        } else if transmits {
+            hit.offset_origin(dir)
+        } else {
+            return Color::zero();
+        };
+        if !(light_pdf > F::zero() && light_pdf.is_finite() && hit.sides_agree(dir)) {
+            return Color::zero();
+        }
+        let Some(f) = material.eval(hit, wo, dir) else {
+            return Color::zero();
+        };
+        self.rays += 1;
+        if self.scene.occluded(&Ray::new(origin, dir), F::infinity()) {
+            return Color::zero();
+        }
+        let weight = power_heuristic(light_pdf, material.pdf(hit, wo, dir));
+        f.colour * background.color(dir) * (f.scale * weight / light_pdf)
     }
 }
 

@@ -3,7 +3,7 @@
 use super::settings::LightSampling;
 use crate::float::Float;
 use crate::light::{Emitters, power_heuristic};
-use crate::material::{Emission, Scatter};
+use crate::material::{Emission, Material, Scatter};
 use crate::ray::Ray;
 use crate::scene::{Layout, Object, Scene};
 use crate::shape::Hit;
@@ -56,21 +56,39 @@ pub struct Tracer<'a, F, S, M> {
     pub(super) scene: &'a Scene<F, S, M>,
     max_depth: u32,
     light_sampling: LightSampling,
+    /// The probability that a light sample draws the background (0 unless the scene makes
+    /// it a light, [`Scene::set_background_sampled`]); an emitter otherwise.
+    pub(super) sky: f64,
     pub(super) rays: u64,
 }
 
-impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
+impl<'a, F: Float, S: Layout<F>, M: Material<F>> Tracer<'a, F, S, M> {
     /// A tracer for `scene` that lets paths bounce at most `max_depth` times, sampling
     /// emitters with [`LightSampling::Mis`].
+    ///
+    /// A background the scene makes a light is drawn with probability ½ when there are
+    /// emitters too (each kind then has the samples it needs wherever the other is dim),
+    /// and always when there are none.
     pub fn new(scene: &'a Scene<F, S, M>, max_depth: u32) -> Self {
+        let sky = match (
+            scene.background_sampled() && !scene.background().is_black(),
+            scene.emitters().is_empty(),
+        ) {
+            (false, _) => 0.0,
+            (true, true) => 1.0,
+            (true, false) => 0.5,
+        };
         Self {
             scene,
             max_depth,
             light_sampling: LightSampling::Mis,
+            sky,
             rays: 0,
         }
     }
+}
 
+impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
     /// The same tracer, finding the light of emitting surfaces by `light_sampling`.
     #[must_use]
     pub fn light_sampling(self, light_sampling: LightSampling) -> Self {
@@ -88,7 +106,9 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
 
     /// The colour a ray brings back, `depth` being the bounces it has already taken:
     ///
-    /// - it hits nothing: the background;
+    /// - it hits nothing: the background (where the scene makes the background a light,
+    ///   only before `max_depth` bounces, and weighted against the background's sample as
+    ///   an emitter's light is);
     /// - it hits a surface after `max_depth` bounces: black `(0, 0, 0)`, emitter or not;
     /// - otherwise the light the surface gives off `L_e`, the direct light `L_d` (from
     ///   point lights and one sampled emitter, through the material's non-delta lobes) and
@@ -105,7 +125,8 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
     /// scattered ray meeting the emitter at depth `d + 1`, so it is taken only if
     /// `d + 1 < max_depth`, where that ray's light would count: both ways then render the
     /// same truncated recursion. Point lights, which no ray can hit, light every surface
-    /// met before `max_depth`.
+    /// met before `max_depth` (where the background is a light, as every light then, only
+    /// where `d + 1 < max_depth`).
     ///
     /// This recursion defines every image: [`render_reference`](super::render_reference)
     /// calls it for each sample, and the batched renderer reproduces it bit for bit.
@@ -138,7 +159,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
 
     /// What a ray's hit (or miss) does: a final colour, or the ray to trace next with the
     /// light this bounce adds (`L_e + L_d`) and the weight to combine with what it brings
-    /// back. Random numbers are drawn in one order: the emitter sample's four, then the
+    /// back. Random numbers are drawn in one order: the light sample's four, then the
     /// material's. Only the material's [`lobes`](crate::Material::lobes), [`eval`](crate::Material::eval),
     /// [`pdf`](crate::Material::pdf), [`emits`](crate::Material::emits) and [`sample`](Scatter::sample)
     /// are asked, never what kind of material it is.
@@ -156,11 +177,11 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         M: Scatter<F, R>,
     {
         let Some((hit, object)) = hit else {
-            return Step::Done(self.scene.background().color(ray.direction));
+            return Step::Done(self.escaped(ray, depth, arrival));
         };
-        // The hit goes by value to the calls below that are not inlined (lights,
-        // emission): a copy made in their branches keeps it out of memory on every other
-        // path (+4 % instructions on the spec's scenes when it escaped by reference).
+        // The hit goes by value to the calls below that are not inlined (emission, the
+        // light sample): a copy made in their branches keeps it out of memory on every
+        // other path (+4 % instructions on the spec's scenes when it escaped by reference).
         if depth >= self.max_depth {
             return Step::Done(Color::zero());
         }
@@ -177,13 +198,16 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
             return Step::Done(saturate(direct));
         }
         let lit = material.lobes().has_non_delta();
-        if lit && !self.scene.lights().is_empty() {
+        // Where the background is a light, every light counts on the same paths: a point
+        // light's sample at depth d stands for a segment d + 2, as an emitter's does.
+        let points_count = !self.scene.background_sampled() || depth + 1 < self.max_depth;
+        if lit && points_count && !self.scene.lights().is_empty() {
             direct = self.direct_light(&hit, material, wo) + direct;
         }
-        // An emitter sample here stands for a scattered ray meeting it at depth + 1.
-        let sampled = lit && self.samples_emitters(emitters, depth);
+        // A light sample here stands for a scattered ray meeting the light at depth + 1.
+        let sampled = lit && self.samples_lights(emitters, depth);
         if sampled {
-            direct = direct + self.sample_emitter(hit, material, wo, emitters, rng);
+            direct = direct + self.sample_light(hit, material, wo, emitters, rng);
         }
         match material.sample(&hit, wo, rng) {
             Some(s) if hit.sides_agree(s.direction) => Step::Go {
@@ -200,19 +224,46 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         }
     }
 
-    /// Whether a hit at `depth` on a surface with a non-delta lobe samples an emitter:
-    /// light sampling is on, there is an emitter, and a ray scattered from here would still
-    /// count the light it finds.
+    /// The colour of a ray that escapes after `depth` bounces: the background's. Where the
+    /// background is a light it counts only before `max_depth` bounces, and, if the ray was
+    /// scattered from a vertex that also sampled lights, it is weighted by
+    /// `w = p_s²/(p_s² + p_b²)`, `p_b` the density with which that vertex's light sample
+    /// draws the direction (the probability of drawing the background times its density).
     #[inline]
-    fn samples_emitters(&self, emitters: &Emitters, depth: u32) -> bool {
-        self.light_sampling == LightSampling::Mis && !emitters.is_empty() && depth + 1 < self.max_depth
+    fn escaped(&self, ray: &Ray<F>, depth: u32, arrival: Arrival<F>) -> Color<F> {
+        let background = self.scene.background();
+        if !self.scene.background_sampled() {
+            return background.color(ray.direction);
+        }
+        if depth >= self.max_depth {
+            return Color::zero();
+        }
+        let colour = background.color(ray.direction);
+        match arrival {
+            Arrival::Scattered(scatter_pdf) if self.sky > 0.0 => {
+                let light_pdf = F::from_f64(self.sky) * background.pdf(ray.direction);
+                colour * power_heuristic(scatter_pdf, light_pdf)
+            }
+            _ => colour,
+        }
+    }
+
+    /// Whether a hit at `depth` on a surface with a non-delta lobe samples a light:
+    /// light sampling is on, there is an emitter or a background that is a light, and a ray
+    /// scattered from here would still count the light it finds.
+    #[inline]
+    fn samples_lights(&self, emitters: &Emitters, depth: u32) -> bool {
+        self.light_sampling == LightSampling::Mis
+            && (!emitters.is_empty() || self.sky > 0.0)
+            && depth + 1 < self.max_depth
     }
 
     /// The light an emitter gives off toward the ray that hit it: `L_e` on an emitting
     /// face, weighted, if the ray was scattered from a vertex that also sampled emitters, by
     /// `w = p_s²/(p_s² + p_e²)`: `p_s` the density the ray was scattered with and `p_e`
-    /// the density with which sampling the emitters from its origin draws this direction
-    /// (the emitter's probability times its shape's density).
+    /// the density with which sampling the lights from its origin draws this direction
+    /// (the probability of drawing an emitter at all, this emitter's, and its shape's
+    /// density).
     fn emitted(
         &self,
         ray: &Ray<F>,
@@ -225,7 +276,8 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         let radiance = emission.toward(hit.front_face);
         match arrival {
             Arrival::Scattered(scatter_pdf) if radiance != Color::zero() => {
-                let chosen = F::from_f64(emitters.probability_of(object.shape.area(), emission));
+                let chosen =
+                    F::from_f64((1.0 - self.sky) * emitters.probability_of(object.shape.area(), emission));
                 let light_pdf = chosen * object.shape.pdf(ray, &hit);
                 radiance * power_heuristic(scatter_pdf, light_pdf)
             }

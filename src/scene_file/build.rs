@@ -5,9 +5,10 @@ use super::camera::FileCamera;
 use super::check::{blame, checked, vec};
 use super::location::KeyPath;
 use super::make::{self, Solid};
-use super::model::{CameraSpec, ObjectSpec, Triple};
+use super::model::{BackgroundSpec, CameraSpec, ObjectSpec, Triple};
 use super::transform::Placement;
 use crate::aabb::Aabb;
+use crate::background::EnvironmentMap;
 use crate::error::{Error, Field, Result};
 use crate::float::Float;
 use crate::material::MaterialKind;
@@ -17,6 +18,7 @@ use crate::shape::{Hittable, Mesh, ShapeKind};
 use crate::validate::{number, rule, show};
 use std::collections::BTreeMap;
 use std::path::Path;
+use std::sync::Arc;
 
 /// What a scene file builds: everything a render needs, and a summary to report.
 #[derive(Clone, Debug)]
@@ -65,14 +67,25 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
         RenderSettings::new(r.spp, r.max_depth, r.seed).map_err(|e| blame(&root, &root.key("render"), e))?;
     let camera = camera::<F>(&root, &file.camera, r.width)?;
     let at = root.key("background");
+    let folder = file.path().parent().unwrap_or(Path::new(""));
+    let map = match &file.background {
+        BackgroundSpec::Envmap { file, scale, .. } => Some(Arc::new(
+            EnvironmentMap::load(&folder.join(file), *scale).map_err(|e| blame(&root, &at, e))?,
+        )),
+        _ => None,
+    };
     let background = checked::<F, _>(
         &root,
         &at,
-        make::background::<f64>(&file.background),
-        make::background::<F>(&file.background),
+        make::background::<f64>(&file.background, map.as_ref()),
+        make::background::<F>(&file.background, map.as_ref()),
     )?;
     let mut scene = EnumScene::new(background);
     scene.set_acceleration(r.acceleration);
+    scene.set_background_sampled(match &file.background {
+        BackgroundSpec::Sky { light, .. } | BackgroundSpec::Solid { light, .. } => *light,
+        BackgroundSpec::Envmap { .. } => true,
+    });
 
     let mut materials = BTreeMap::new();
     for (name, m) in &file.materials {
@@ -80,7 +93,6 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
         let made = checked::<F, _>(&root, &at, make::material::<f64>(m), make::material::<F>(m))?;
         materials.insert(name.as_str(), made);
     }
-    let folder = file.path().parent().unwrap_or(Path::new(""));
     let mut summary = Summary::default();
     for (i, object) in file.objects.iter().enumerate() {
         let at = root.key("objects").index(i);

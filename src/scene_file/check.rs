@@ -43,6 +43,9 @@ pub fn key<'a>(root: &KeyPath<'a>, entry: &KeyPath<'a>, field: Field) -> KeyPath
         Field::BackgroundColor => own("color"),
         Field::SkyHorizon => own("horizon"),
         Field::SkyZenith => own("zenith"),
+        Field::EnvironmentMap => own("file"),
+        Field::EnvironmentScale => own("scale"),
+        Field::EnvironmentRotation => own("rotate"),
         Field::CameraFrom => own("from"),
         // `from == at` gives no view direction: the target is the one to move.
         Field::CameraAt | Field::CameraView => own("at"),

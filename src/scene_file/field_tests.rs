@@ -143,6 +143,21 @@ fn case(field: Field) -> Option<Case> {
             true,
             "background.zenith",
         ),
+        Field::EnvironmentMap => (
+            "[background]\ntype = \"envmap\"\nfile = \"no-such-map.exr\"\n".into(),
+            false,
+            "background.file",
+        ),
+        Field::EnvironmentScale => (
+            format!(
+                "[background]\ntype = \"envmap\"\nfile = {:?}\nscale = -1\n",
+                small_map().display()
+            ),
+            false,
+            "background.scale",
+        ),
+        // Rotations in degrees are always a rotation: no file can give another matrix.
+        Field::EnvironmentRotation => return None,
         Field::CameraFrom => (look_at("from = [0, inf, 0]"), false, "camera.from"),
         Field::CameraAt => (look_at("at = [0, 0, 1e39]"), true, "camera.at"),
         Field::CameraView => (look_at("from = [1, 2, 3]\nat = [1, 2, 3]"), false, "camera.at"),
@@ -167,9 +182,21 @@ fn case(field: Field) -> Option<Case> {
     Some(Case { text, f32, field, at })
 }
 
-/// Every field, the user's own excepted. A field added to [`Field`] needs a case in the
-/// `match` above to compile, and belongs here too.
-const FIELDS: [Field; 30] = [
+/// A 2×1 OpenEXR environment map, written once into the temporary folder.
+fn small_map() -> &'static Path {
+    static MAP: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
+    MAP.get_or_init(|| {
+        let path = std::env::temp_dir().join(format!("raytrace-field-map-{}.exr", std::process::id()));
+        let image = crate::Image::from_pixels(2, 1, vec![[1.0, 0.5, 0.25]; 2]).unwrap();
+        crate::image::write_exr(&path, &image).unwrap();
+        path
+    })
+}
+
+/// Every field but those no scene file can get wrong (a user's own, a rotation matrix). A
+/// field added to [`Field`] needs a case in the `match` above to compile, and belongs here
+/// too.
+const FIELDS: [Field; 32] = [
     Field::SphereCenter,
     Field::SphereRadius,
     Field::PlanePoint,
@@ -190,6 +217,8 @@ const FIELDS: [Field; 30] = [
     Field::BackgroundColor,
     Field::SkyHorizon,
     Field::SkyZenith,
+    Field::EnvironmentMap,
+    Field::EnvironmentScale,
     Field::CameraFrom,
     Field::CameraAt,
     Field::CameraView,

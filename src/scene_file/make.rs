@@ -5,13 +5,16 @@
 use super::camera::FileCamera;
 use super::check::vec;
 use super::model::{BackgroundSpec, FresnelSpec, LightSpec, MaterialSpec};
-use crate::background::Background;
+use super::transform::Placement;
+use crate::background::{Background, EnvironmentMap};
 use crate::camera::{LookAtCamera, ScreenCamera};
 use crate::error::Result;
 use crate::float::{Float, lit};
 use crate::light::PointLight;
 use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, Reflectance};
 use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
+use crate::vec3::Vec3;
+use std::sync::Arc;
 
 /// A shape a file describes by its numbers alone (not a mesh).
 #[derive(Clone, Copy, Debug)]
@@ -69,10 +72,27 @@ pub fn material<G: Float>(spec: &MaterialSpec) -> Result<MaterialKind<G>> {
 }
 
 /// The background in `G`.
-pub fn background<G: Float>(spec: &BackgroundSpec) -> Result<Background<G>> {
-    match *spec {
-        BackgroundSpec::Sky { horizon, zenith } => Background::sky(vec(horizon), vec(zenith)),
-        BackgroundSpec::Solid { color } => Background::solid(vec(color)),
+///
+/// An environment map comes already read (`map`, read once for every scalar).
+pub fn background<G: Float>(
+    spec: &BackgroundSpec,
+    map: Option<&Arc<EnvironmentMap>>,
+) -> Result<Background<G>> {
+    match (spec, map) {
+        (BackgroundSpec::Sky { horizon, zenith, .. }, _) => Background::sky(vec(*horizon), vec(*zenith)),
+        (BackgroundSpec::Solid { color, .. }, _) => Background::solid(vec(*color)),
+        (BackgroundSpec::Envmap { rotate, .. }, Some(map)) => {
+            let turn = Placement::new([1.0; 3], *rotate, [0.0; 3]);
+            // Rows of R from the images of the axes (its columns).
+            let [x, y, z] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+                .map(|e| turn.apply(Vec3::new(e[0], e[1], e[2])).to_f64());
+            let rotation = [[x[0], y[0], z[0]], [x[1], y[1], z[1]], [x[2], y[2], z[2]]];
+            Background::map(Arc::clone(map), rotation)
+        }
+        (BackgroundSpec::Envmap { .. }, None) => Err(crate::Error::invalid(
+            crate::error::Field::EnvironmentMap,
+            "the image was not read",
+        )),
     }
 }
 

@@ -123,13 +123,40 @@ pub enum BackgroundSpec {
         /// The colour straight up (default `[0.5, 0.7, 1.0]`).
         #[serde(deserialize_with = "super::triple::deserialize", default = "sky_blue")]
         zenith: Triple,
+        /// Whether the sky is a light the renderer samples (default `false`: only what
+        /// escaping rays see, the specification's sky).
+        #[serde(default, skip_serializing_if = "is_false")]
+        light: bool,
     },
     /// One colour in every direction.
     Solid {
         /// The colour.
         #[serde(deserialize_with = "super::triple::deserialize")]
         color: Triple,
+        /// Whether the colour is a light the renderer samples (default `false`).
+        #[serde(default, skip_serializing_if = "is_false")]
+        light: bool,
     },
+    /// An HDR environment map (OpenEXR), in Mitsuba 3's `envmap` conventions: always a
+    /// light.
+    Envmap {
+        /// The image, relative to the scene file's folder.
+        file: String,
+        /// What every texel is multiplied by (default 1).
+        #[serde(default = "one")]
+        scale: f64,
+        /// Rotations about x, then y, then z, in degrees, as a mesh's (default none).
+        #[serde(deserialize_with = "super::triple::deserialize", default)]
+        rotate: Triple,
+    },
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
+}
+
+fn one() -> f64 {
+    1.0
 }
 
 fn white() -> Triple {
@@ -146,6 +173,7 @@ impl Default for BackgroundSpec {
         Self::Sky {
             horizon: white(),
             zenith: sky_blue(),
+            light: false,
         }
     }
 }

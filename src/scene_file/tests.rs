@@ -100,6 +100,7 @@ fn everything_round_trips_through_toml() {
     };
     f.background = BackgroundSpec::Solid {
         color: [0.1, 0.2, 0.3],
+        light: true,
     };
     f.materials.insert(
         "glass with spaces".into(),

@@ -58,9 +58,11 @@ pub(super) fn static_warnings(file: &SceneFile) -> Vec<Warning> {
         found.push(Warning::NoObjects);
     }
     let bright = |c: [f64; 3]| c.iter().any(|&x| x > 0.0);
-    let background = match file.background {
-        BackgroundSpec::Sky { horizon, zenith } => bright(horizon) || bright(zenith),
-        BackgroundSpec::Solid { color } => bright(color),
+    let background = match &file.background {
+        BackgroundSpec::Sky { horizon, zenith, .. } => bright(*horizon) || bright(*zenith),
+        BackgroundSpec::Solid { color, .. } => bright(*color),
+        // An environment map's texels are read when the scene is built: assume light.
+        BackgroundSpec::Envmap { scale, .. } => *scale > 0.0,
     };
     let lights = file.lights.iter().any(|l| bright(l.intensity));
     let emitters = file.objects.iter().any(|o| {

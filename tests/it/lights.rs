@@ -249,7 +249,7 @@ fn two_lights_add<F: Float>() {
 /// return black at the depth limit.)
 fn lights_add_to_the_sky<F: Float>() {
     let sky = Background::<F>::default();
-    let mut scene = EnumScene::new(sky);
+    let mut scene = EnumScene::new(sky.clone());
     let matte = Lambertian::new(v::<F>(ALBEDO)).unwrap();
     scene.add(sphere::<F>(CENTER, RADIUS), matte);
     scene.add_light(light(LIGHT, INTENSITY));

@@ -25,6 +25,7 @@ mod degenerate_scatter;
 mod emission;
 mod emission_analytic;
 mod emitter_chi2;
+mod environment;
 mod example_files;
 mod example_options;
 mod flat_shapes;

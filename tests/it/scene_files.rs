@@ -165,9 +165,12 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
             }),
     ];
     let background = prop_oneof![
-        (triple(0.0..2.0), triple(0.0..2.0))
-            .prop_map(|(horizon, zenith)| BackgroundSpec::Sky { horizon, zenith }),
-        triple(0.0..1.0).prop_map(|color| BackgroundSpec::Solid { color }),
+        (triple(0.0..2.0), triple(0.0..2.0)).prop_map(|(horizon, zenith)| BackgroundSpec::Sky {
+            horizon,
+            zenith,
+            light: false
+        }),
+        triple(0.0..1.0).prop_map(|color| BackgroundSpec::Solid { color, light: false }),
     ];
     let material = prop_oneof![
         triple(0.0..1.0).prop_map(|albedo| MaterialSpec::Mirror { albedo }),

@@ -37,7 +37,7 @@ pub fn scene_hash(file: &SceneFile) -> Result<String> {
     let mut hash = Fnv(0xcbf2_9ce4_8422_2325);
     // Writing into the hash never fails.
     let _ = hash.write_all(file.to_toml().as_bytes());
-    for mesh in file.mesh_files() {
+    for mesh in file.input_files() {
         let io_err = |source| Error::Io {
             path: mesh.clone(),
             source,
@@ -55,7 +55,7 @@ pub fn scene_hash(file: &SceneFile) -> Result<String> {
 /// The files `raytrace render` reads: the scene file and every mesh it names.
 pub fn of_scene(file: &SceneFile) -> Vec<PathBuf> {
     std::iter::once(file.path().to_path_buf())
-        .chain(file.mesh_files())
+        .chain(file.input_files())
         .collect()
 }
 
