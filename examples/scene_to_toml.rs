@@ -149,7 +149,7 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
                 let [a, b, c] = t.vertices().map(|v| v.to_f64());
                 ObjectSpec::Triangle { a, b, c, material }
             }
-            ShapeKind::Mesh(_) => {
+            ShapeKind::Mesh(_) | ShapeKind::Instance(_) => {
                 let why = format!("{}: a mesh cannot be written without its file", e.name);
                 return Err(raytrace::Error::InvalidSettings(why));
             }

@@ -98,12 +98,13 @@ impl<F: Float> Aabb<F> {
     }
 }
 
-/// A ray as the slab test needs it: its origin, reciprocal direction, and the reciprocal
-/// grown for the far faces ([`slab_test`]).
+/// A ray as the slab test needs it: its origin, its reciprocal direction, and the
+/// reciprocal shrunk for the near faces and grown for the far ones ([`slab_test`]).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SlabRay<F> {
     origin: [F; 3],
     inv_d: [F; 3],
+    inv_near: [F; 3],
     inv_far: [F; 3],
 }
 
@@ -114,6 +115,13 @@ fn far_growth<F: Float>() -> F {
     F::one() + F::gamma(4) * crate::float::lit(2.0)
 }
 
+/// `1 − 2γ(4)`, the factor on the reciprocal direction for the near faces that keeps the
+/// entry distance from exceeding the true one (see [`slab_test`]).
+#[inline]
+fn near_shrink<F: Float>() -> F {
+    F::one() - F::gamma(4) * crate::float::lit(2.0)
+}
+
 impl<F: Float> SlabRay<F> {
     /// Prepares `ray` (`1/D` may have infinite components; that is fine).
     #[inline]
@@ -122,6 +130,7 @@ impl<F: Float> SlabRay<F> {
         Self {
             origin: [0, 1, 2].map(|axis| ray.origin[axis]),
             inv_d,
+            inv_near: inv_d.map(|i| i * near_shrink()),
             inv_far: inv_d.map(|i| i * far_growth()),
         }
     }
@@ -155,8 +164,12 @@ impl<F: Float> SlabRay<F> {
 /// (four roundings). With `g = 1 + 2γ(4)`, `g(1 − γ(4)) = 1 + γ(4) − 2γ(4)² > 1 + γ(3)`,
 /// so whenever the true near distance is at most the true far one, the computed ones
 /// compare the same way. (pbrt's `1 + 2γ(3)` applied after the product leaves no room
-/// for the rounding of that last multiplication.) A ray lying in a slab's plane gives
-/// `0·∞ = NaN`, which fails every comparison: no constraint.
+/// for the rounding of that last multiplication.) The near distances are shrunk the same
+/// way, by `1 − 2γ(4)`: a computed entry distance is never above the true one, so a box
+/// holding a hit at `t` is entered at or before `t`, and a walk that prunes boxes entered
+/// beyond its nearest hit so far never prunes one holding a hit nearer by an ulp (the
+/// answer cannot depend on the order the boxes are visited in). A ray lying in a slab's
+/// plane gives `0·∞ = NaN`, which fails every comparison: no constraint.
 #[inline(always)]
 pub(crate) fn slab_test<F: Float>(
     near: &[F4<F>; 3],
@@ -168,7 +181,7 @@ pub(crate) fn slab_test<F: Float>(
     let mut t1 = F4::splat(t_max);
     for axis in 0..3 {
         let o = F4::splat(ray.origin[axis]);
-        let t_near = (near[axis] - o) * F4::splat(ray.inv_d[axis]);
+        let t_near = (near[axis] - o) * F4::splat(ray.inv_near[axis]);
         let t_far = (far[axis] - o) * F4::splat(ray.inv_far[axis]);
         t0 = F4::select_lt(t0, t_near, t_near, t0);
         t1 = F4::select_lt(t_far, t1, t_far, t1);

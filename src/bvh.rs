@@ -136,24 +136,33 @@ impl<F: Float> Bvh<F> {
     /// is dropped without another test.
     #[inline]
     pub fn traverse(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
+        self.traverse_with::<false>(ray, t_max, F::zero(), visit);
+    }
+
+    /// [`Bvh::traverse`] with every box grown by `pad ≥ 0` on every side: for primitives
+    /// known only to within `pad` of their boxes (an instance's triangles, whose vertices
+    /// are rounded after the transform the ray is brought back through).
+    #[inline]
+    pub fn traverse_padded(&self, ray: &Ray<F>, t_max: F, pad: F, visit: impl FnMut(usize, F) -> Option<F>) {
+        self.traverse_with::<true>(ray, t_max, pad, visit);
+    }
+
+    #[inline]
+    fn traverse_with<const PAD: bool>(
+        &self,
+        ray: &Ray<F>,
+        t_max: F,
+        pad: F,
+        visit: impl FnMut(usize, F) -> Option<F>,
+    ) {
         const INLINE: usize = 24;
         let need = self.stack_size();
         if need <= INLINE {
-            self.traverse_wide(
-                self.root,
-                &mut [(Child::Empty, F::zero()); INLINE],
-                ray,
-                t_max,
-                visit,
-            );
+            let stack = &mut [(Child::Empty, F::zero()); INLINE];
+            self.traverse_wide::<PAD>(self.root, stack, ray, t_max, pad, visit);
         } else {
-            self.traverse_wide(
-                self.root,
-                &mut vec![(Child::Empty, F::zero()); need],
-                ray,
-                t_max,
-                visit,
-            );
+            let stack = &mut vec![(Child::Empty, F::zero()); need];
+            self.traverse_wide::<PAD>(self.root, stack, ray, t_max, pad, visit);
         }
     }
 

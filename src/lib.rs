@@ -54,6 +54,7 @@ pub mod scene;
 pub mod scene_file;
 pub mod shape;
 pub mod texture;
+pub mod transform;
 mod validate;
 pub mod vec3;
 

@@ -93,6 +93,7 @@ impl<F: Float> EnumScene<F> {
                 ShapeKind::Plane(p) => Box::new(*p),
                 ShapeKind::Triangle(t) => Box::new(*t),
                 ShapeKind::Mesh(m) => Box::new(Arc::clone(m)),
+                ShapeKind::Instance(i) => Box::new(Arc::clone(i)),
             };
             let material: SharedMaterial<F> = match o.material {
                 MaterialKind::Mirror(m) => Arc::new(m).into(),

@@ -2,6 +2,7 @@
 //! [`ShapeKind`], the enum fast path over the concrete shapes.
 
 mod hit;
+mod instance;
 mod kind;
 mod mesh;
 mod plane;
@@ -12,6 +13,7 @@ mod triangle;
 mod triangle4;
 
 pub use hit::{Coordinates, Hit, Surface, flat_hit_error, flat_surface};
+pub use instance::{Instance, Prototype};
 pub use kind::ShapeKind;
 pub use mesh::Mesh;
 pub use plane::Plane;
@@ -129,8 +131,9 @@ pub trait Hittable<F: Float> {
     /// A box holding part `part` (in `0..parts()`), or `None` if it is unbounded.
     fn part_bounds(&self, part: u32) -> Option<Aabb<F>>;
 
-    /// [`intersect`](Hittable::intersect) for part `part` alone; the answer's
-    /// [`part`](Intersection::part) is `part`.
+    /// [`intersect`](Hittable::intersect) for part `part` alone. The answer's
+    /// [`part`](Intersection::part) is what [`finish`](Hittable::finish) needs: `part`
+    /// itself, but for a shape that finds its own sub-parts (an [`Instance`]'s triangle).
     fn intersect_part(&self, part: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>>;
 
     /// The surface area, if this shape can be sampled as a light; `None` otherwise.

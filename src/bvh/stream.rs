@@ -141,11 +141,17 @@ impl<F: Float, L: FnMut(usize, &[RayIndex], &mut [F])> Walk<'_, F, L> {
                 let ri = r as usize;
                 let (leaf, t_max) = (&mut *self.leaf, &mut *self.t_max);
                 let start = Some(Child::Node(i));
-                self.bvh
-                    .traverse_wide(start, self.stack, &self.rays[ri], t_max[ri], |k, _| {
+                self.bvh.traverse_wide::<false>(
+                    start,
+                    self.stack,
+                    &self.rays[ri],
+                    t_max[ri],
+                    F::zero(),
+                    |k, _| {
                         leaf(k, &[r], t_max);
                         Some(t_max[ri])
-                    });
+                    },
+                );
             }
             return;
         }

@@ -142,28 +142,47 @@ pub(super) fn depth<F>(wide: &[Wide<F>], root: Option<Child>) -> usize {
 }
 
 /// The entry distance into each of node `n`'s four boxes, and the mask of the boxes the ray
-/// `r` (of direction octant `octant`) meets in `(0, t_max]`: [`slab_test`].
+/// `r` (of direction octant `octant`) meets in `(0, t_max]`: [`slab_test`]. With `PAD`,
+/// every box is first grown by the pad whose near-face shift (per axis, toward the ray's
+/// origin) is `shift`: the far faces move the other way.
 #[inline(always)]
-fn entries<F: Float>(r: &SlabRay<F>, octant: usize, n: &Wide<F>, t_max: F) -> (F4<F>, u32) {
-    let (near, far) = n.faces(octant);
+fn entries<F: Float, const PAD: bool>(
+    r: &SlabRay<F>,
+    octant: usize,
+    n: &Wide<F>,
+    t_max: F,
+    shift: &[F4<F>; 3],
+) -> (F4<F>, u32) {
+    let (mut near, mut far) = n.faces(octant);
+    if PAD {
+        for axis in 0..3 {
+            near[axis] = near[axis] + shift[axis];
+            far[axis] = far[axis] - shift[axis];
+        }
+    }
     let (t0, t1) = slab_test(&near, &far, r, t_max);
     (t0, F4::mask_le(t0, t1))
 }
 
 impl<F: Float> Bvh<F> {
     /// The wide traversal behind [`Bvh::traverse`], from the subtree `start` (the root
-    /// for the whole tree); `stack` holds at least `3·wide_depth + 1` entries.
+    /// for the whole tree); `stack` holds at least `3·wide_depth + 1` entries. With `PAD`,
+    /// every box is grown by `pad` on every side ([`Bvh::traverse_padded`]).
     #[inline]
-    pub(super) fn traverse_wide(
+    pub(super) fn traverse_wide<const PAD: bool>(
         &self,
         start: Option<Child>,
         stack: &mut [(Child, F)],
         ray: &Ray<F>,
         mut t_max: F,
+        pad: F,
         mut visit: impl FnMut(usize, F) -> Option<F>,
     ) {
         let r = SlabRay::new(ray);
         let octant = r.octant();
+        // Toward the origin: down the axis where the direction is positive (the near face
+        // is the low one).
+        let shift = [0, 1, 2].map(|axis| F4::splat(if r.negative(axis) { pad } else { -pad }));
         let mut top = 0;
         let mut current = match start {
             Some(start) => start,
@@ -173,7 +192,7 @@ impl<F: Float> Bvh<F> {
             match current {
                 Child::Node(i) => {
                     let n = &self.wide[i as usize];
-                    let (t, mut entered) = entries(&r, octant, n, t_max);
+                    let (t, mut entered) = entries::<F, PAD>(&r, octant, n, t_max, &shift);
                     if entered.count_ones() == 1 {
                         // One child entered (the common case): go straight down.
                         current = n.child[entered.trailing_zeros() as usize];

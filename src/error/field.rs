@@ -57,6 +57,8 @@ pub enum Field {
     EnvironmentScale,
     /// [`Background::map`](crate::Background::map)'s rotation.
     EnvironmentRotation,
+    /// An [`Affine`](crate::transform::Affine) transform's matrix.
+    Transform,
     /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s eye, `from`.
     CameraFrom,
     /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s target, `at`.
@@ -117,6 +119,7 @@ impl Field {
             Self::EnvironmentMap => "environment map",
             Self::EnvironmentScale => "environment map scale",
             Self::EnvironmentRotation => "environment map rotation",
+            Self::Transform => "transform",
             Self::CameraFrom => "camera position",
             Self::CameraAt => "camera target",
             Self::CameraView => "camera view direction (from − at)",

@@ -157,7 +157,7 @@ impl<F: Float> Index<F> {
         if self.plain {
             for (i, ray) in rays.iter().enumerate() {
                 if let Some((hit, o)) = plain::nearest(objects, ray, F::infinity()) {
-                    found[i].offer(&mut t[i], hit.t, (o, hit.part), || hit.coords);
+                    found[i].offer_part(&mut t[i], hit.t, (o, hit.part), hit.part, || hit.coords);
                 }
             }
         }

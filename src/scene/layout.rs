@@ -45,6 +45,8 @@ impl<F: Float> Layout<F> for ShapeKind<F> {
             Self::Plane(p) => p.primitive(part),
             Self::Triangle(t) => t.primitive(part),
             Self::Mesh(m) => m.primitive(part),
+            // Tested whole, through its own BVH.
+            Self::Instance(_) => Primitive::Other,
         }
     }
 }

@@ -12,8 +12,10 @@ use crate::ray::Ray;
 use crate::shape::{Hittable, Intersection};
 
 /// The nearest intersection in `(0, t_max)` and the index of the object it is on: each
-/// part of each object asked for a hit nearer than the nearest so far, so a later part at
-/// the same `t` never replaces an earlier one (the interval is open).
+/// part of each object asked with no bound (as the index's lanes are: a bound can enter a
+/// shape's test before its last rounding and turn away a hit nearer by an ulp), then
+/// kept if strictly nearer than the nearest so far, so a later part at the same `t`
+/// never replaces an earlier one.
 pub(super) fn nearest<F: Float, S: Hittable<F>, M>(
     objects: &[Object<S, M>],
     ray: &Ray<F>,
@@ -23,8 +25,9 @@ pub(super) fn nearest<F: Float, S: Hittable<F>, M>(
     for (o, object) in objects.iter().enumerate() {
         for part in 0..object.shape.parts() {
             let bound = best.map_or(t_max, |(hit, _)| hit.t);
-            if let Some(hit) = object.shape.intersect_part(part, ray, bound) {
-                best = Some((hit, o as u32));
+            match object.shape.intersect_part(part, ray, F::infinity()) {
+                Some(hit) if hit.t < bound => best = Some((hit, o as u32)),
+                _ => {}
             }
         }
     }
@@ -35,6 +38,9 @@ pub(super) fn nearest<F: Float, S: Hittable<F>, M>(
 #[inline]
 pub(super) fn any<F: Float, S: Hittable<F>, M>(objects: &[Object<S, M>], ray: &Ray<F>, t_max: F) -> bool {
     objects.iter().any(|object| {
-        (0..object.shape.parts()).any(|part| object.shape.intersect_part(part, ray, t_max).is_some())
+        (0..object.shape.parts()).any(|part| {
+            let hit = object.shape.intersect_part(part, ray, F::infinity());
+            hit.is_some_and(|h| h.t < t_max)
+        })
     })
 }

@@ -44,6 +44,9 @@ pub struct Summary {
     pub triangles: usize,
     /// Mesh objects.
     pub meshes: usize,
+    /// Placements of shared meshes (their triangles count among the triangles, once per
+    /// placement).
+    pub instances: usize,
     /// Point lights.
     pub lights: usize,
     /// Objects that give off light (of an emissive material).
@@ -271,6 +274,10 @@ fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
             ShapeKind::Plane(_) => summary.planes += 1,
             ShapeKind::Triangle(_) => summary.triangles += 1,
             ShapeKind::Mesh(m) => summary.triangles += m.parts() as usize,
+            ShapeKind::Instance(i) => {
+                summary.instances += 1;
+                summary.triangles += i.prototype().triangles().len();
+            }
         }
         if let Some(b) = o.shape.bounds() {
             let b = Aabb::new(b.min.cast::<f64>(), b.max.cast::<f64>());

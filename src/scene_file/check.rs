@@ -46,6 +46,7 @@ pub fn key<'a>(root: &KeyPath<'a>, entry: &KeyPath<'a>, field: Field) -> KeyPath
         Field::EnvironmentMap => own("file"),
         Field::EnvironmentScale => own("scale"),
         Field::EnvironmentRotation => own("rotate"),
+        Field::Transform => own("transform"),
         Field::CameraFrom => own("from"),
         // `from == at` gives no view direction: the target is the one to move.
         Field::CameraAt | Field::CameraView => own("at"),

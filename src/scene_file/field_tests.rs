@@ -158,6 +158,9 @@ fn case(field: Field) -> Option<Case> {
         ),
         // Rotations in degrees are always a rotation: no file can give another matrix.
         Field::EnvironmentRotation => return None,
+        // Scale, rotate and translate always make an invertible transform (a zero scale is
+        // refused as a scale).
+        Field::Transform => return None,
         Field::CameraFrom => (look_at("from = [0, inf, 0]"), false, "camera.from"),
         Field::CameraAt => (look_at("at = [0, 0, 1e39]"), true, "camera.at"),
         Field::CameraView => (look_at("from = [1, 2, 3]\nat = [1, 2, 3]"), false, "camera.at"),

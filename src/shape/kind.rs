@@ -1,6 +1,8 @@
 //! [`ShapeKind`]: the enum fast path over the concrete shapes.
 
-use super::{Coordinates, Hit, Hittable, Intersection, Mesh, Plane, Sphere, SurfaceSample, Triangle};
+use super::{
+    Coordinates, Hit, Hittable, Instance, Intersection, Mesh, Plane, Sphere, SurfaceSample, Triangle,
+};
 use crate::aabb::Aabb;
 use crate::float::Float;
 use crate::ray::Ray;
@@ -18,6 +20,8 @@ pub enum ShapeKind<F> {
     Triangle(Triangle<F>),
     /// A triangle [`Mesh`], shared: cloning the shape does not copy its buffers.
     Mesh(Arc<Mesh<F>>),
+    /// A placement of a shared mesh ([`Instance`]).
+    Instance(Arc<Instance<F>>),
 }
 
 /// `match` on a [`ShapeKind`], the same call on every variant.
@@ -28,6 +32,7 @@ macro_rules! each_shape {
             ShapeKind::Plane($s) => $call,
             ShapeKind::Triangle($s) => $call,
             ShapeKind::Mesh($s) => $call,
+            ShapeKind::Instance($s) => $call,
         }
     };
 }
@@ -101,6 +106,12 @@ impl<F> From<Mesh<F>> for ShapeKind<F> {
     }
 }
 
+impl<F> From<Instance<F>> for ShapeKind<F> {
+    fn from(i: Instance<F>) -> Self {
+        Self::Instance(Arc::new(i))
+    }
+}
+
 impl<F> From<Arc<Mesh<F>>> for ShapeKind<F> {
     fn from(m: Arc<Mesh<F>>) -> Self {
         Self::Mesh(m)
@@ -115,6 +126,7 @@ impl<F: Float> ShapeKind<F> {
             Self::Plane(p) => p.cast()?.into(),
             Self::Triangle(t) => t.cast()?.into(),
             Self::Mesh(m) => m.cast()?.into(),
+            Self::Instance(i) => i.cast()?.into(),
         })
     }
 }

@@ -266,9 +266,12 @@ impl<F: Float> Hittable<F> for Mesh<F> {
     fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
         let mut nearest: Option<Intersection<F>> = None;
         for part in 0..self.parts() {
+            // No bound inside the test (it could turn away a hit nearer by an ulp); the
+            // comparison keeps the first of equally near triangles.
             let bound = nearest.map_or(t_max, |n| n.t);
-            if let Some(i) = self.intersect_part(part, ray, bound) {
-                nearest = Some(i);
+            match self.intersect_part(part, ray, F::infinity()) {
+                Some(i) if i.t < bound => nearest = Some(i),
+                _ => {}
             }
         }
         nearest

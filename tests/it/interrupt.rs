@@ -305,12 +305,20 @@ fn merge_until_signalled(dir: &Path, tiles: &Path, signal: &str, n: i32) {
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
-        if wait_for(&mut child, "a temporary file", || !temporaries(dir).is_empty()).is_err() {
+        // The image's own temporary file, not the probe that checks the folder is writable.
+        let writing = || temporaries(dir).iter().any(|n| n.starts_with(".x.ppm."));
+        if wait_for(&mut child, "the image's temporary file", writing).is_err() {
             std::fs::remove_file(dir.join("x.ppm")).unwrap();
             continue;
         }
         send(&child, signal);
         let output = child.wait_with_output().unwrap();
+        if output.status.success() {
+            // The write ended between the poll and the signal (a loaded machine): the
+            // image is whole; try again, larger.
+            std::fs::remove_file(dir.join("x.ppm")).unwrap();
+            continue;
+        }
         stopped(
             &output,
             signal,

@@ -30,6 +30,7 @@ mod example_files;
 mod example_options;
 mod flat_shapes;
 mod glass;
+mod instances;
 mod interrupt;
 mod intersections;
 mod lambertian_chi2;

@@ -20,6 +20,9 @@ pub(super) const NONE: u32 = u32::MAX;
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Found<F> {
     pub(super) key: Key,
+    /// What the shape's intersection called the part, for [`Hittable::finish`]: the key's
+    /// part, but for a shape that finds its own parts (an instance's triangle).
+    pub(super) part: u32,
     pub(super) coords: [F; 3],
 }
 
@@ -28,6 +31,7 @@ impl<F: Float> Found<F> {
     pub(super) fn none() -> Self {
         Self {
             key: (NONE, 0),
+            part: 0,
             coords: [F::zero(); 3],
         }
     }
@@ -36,7 +40,7 @@ impl<F: Float> Found<F> {
     pub(super) fn intersection(&self, t: F) -> Intersection<F> {
         Intersection {
             t,
-            part: self.key.1,
+            part: self.part,
             coords: self.coords,
         }
     }
@@ -47,10 +51,24 @@ impl<F: Float> Found<F> {
     /// offered in, the nearest ends the same: the answer of a loop over all the parts.
     #[inline(always)]
     pub(super) fn offer(&mut self, nearest: &mut F, t: F, key: Key, coords: impl FnOnce() -> [F; 3]) {
+        self.offer_part(nearest, t, key, key.1, coords);
+    }
+
+    /// [`Found::offer`] of an intersection whose shape names the part `part` itself.
+    #[inline(always)]
+    pub(super) fn offer_part(
+        &mut self,
+        nearest: &mut F,
+        t: F,
+        key: Key,
+        part: u32,
+        coords: impl FnOnce() -> [F; 3],
+    ) {
         if t < *nearest || (t == *nearest && key < self.key) {
             *nearest = t;
             *self = Self {
                 key,
+                part,
                 coords: coords(),
             };
         }
@@ -119,7 +137,7 @@ impl<F: Float> Packet<F> {
                     for &(object, part) in self.keys.iter().take_while(|k| k.0 != NONE) {
                         let shape = &objects[object as usize].shape;
                         if let Some(i) = shape.intersect_part(part, &rays[r], F::infinity()) {
-                            found[r].offer(&mut nearest[r], i.t, (object, part), || i.coords);
+                            found[r].offer_part(&mut nearest[r], i.t, (object, part), i.part, || i.coords);
                         }
                     }
                 }
