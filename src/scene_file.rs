@@ -38,6 +38,8 @@ mod integer;
 mod location;
 mod make;
 mod model;
+mod resolve;
+mod texture_spec;
 mod transform;
 mod triple;
 mod warnings;
@@ -48,6 +50,7 @@ pub use model::{
     BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
     RenderOptions, Scale, Triple,
 };
+pub use texture_spec::{TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
 pub use warnings::Warning;
 
@@ -70,6 +73,9 @@ pub struct SceneFile {
     pub camera: CameraSpec,
     /// `[background]`.
     pub background: BackgroundSpec,
+    /// `[textures.NAME]`: the textures colour keys may refer to by name.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub textures: BTreeMap<String, TextureSpec>,
     /// `[materials.NAME]`: the materials objects refer to by name.
     #[serde(skip_serializing_if = "BTreeMap::is_empty")]
     pub materials: BTreeMap<String, MaterialSpec>,

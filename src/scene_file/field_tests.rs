@@ -25,6 +25,10 @@ fn material(kind: &str, keys: &str) -> String {
     format!("[materials.x]\ntype = \"{kind}\"\n{keys}\n")
 }
 
+fn texture(kind: &str, keys: &str) -> String {
+    format!("[textures.t]\ntype = \"{kind}\"\n{keys}\n")
+}
+
 fn look_at(keys: &str) -> String {
     let base = [
         ("from", "from = [0, 0, 0]"),
@@ -118,6 +122,26 @@ fn case(field: Field) -> Option<Case> {
             false,
             "materials.x.albedo",
         ),
+        Field::CheckerboardColor0 => (
+            texture("checkerboard", "color0 = [nan, 0, 0]"),
+            false,
+            "textures.t.color0",
+        ),
+        Field::CheckerboardColor1 => (
+            texture("checkerboard", "color1 = [0, 1e39, 0]"),
+            true,
+            "textures.t.color1",
+        ),
+        Field::TextureScale => (
+            texture("checkerboard", "scale = [1, inf]"),
+            false,
+            "textures.t.scale",
+        ),
+        Field::TextureOffset => (
+            texture("checkerboard", "offset = [1e39, 0]"),
+            true,
+            "textures.t.offset",
+        ),
         Field::LightPosition => (
             "[[lights]]\nposition = [1e39, 0, 0]\nintensity = [1, 1, 1]\n".into(),
             true,
@@ -169,7 +193,7 @@ fn case(field: Field) -> Option<Case> {
 
 /// Every field, the user's own excepted. A field added to [`Field`] needs a case in the
 /// `match` above to compile, and belongs here too.
-const FIELDS: [Field; 30] = [
+const FIELDS: [Field; 34] = [
     Field::SphereCenter,
     Field::SphereRadius,
     Field::PlanePoint,
@@ -185,6 +209,10 @@ const FIELDS: [Field; 30] = [
     Field::DielectricAlbedo,
     Field::EmittedRadiance,
     Field::EmissiveAlbedo,
+    Field::CheckerboardColor0,
+    Field::CheckerboardColor1,
+    Field::TextureScale,
+    Field::TextureOffset,
     Field::LightPosition,
     Field::LightIntensity,
     Field::BackgroundColor,

@@ -5,12 +5,13 @@
 use super::camera::FileCamera;
 use super::check::vec;
 use super::model::{BackgroundSpec, FresnelSpec, LightSpec, MaterialSpec};
+use super::resolve::{Inputs, TextureUse};
 use crate::background::Background;
 use crate::camera::{LookAtCamera, ScreenCamera};
 use crate::error::Result;
 use crate::float::{Float, lit};
 use crate::light::PointLight;
-use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, Reflectance};
+use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, NormalMap, Reflectance};
 use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
 
 /// A shape a file describes by its numbers alone (not a mesh).
@@ -33,11 +34,13 @@ pub fn shape<G: Float>(solid: Solid) -> Result<ShapeKind<G>> {
     })
 }
 
-/// The material in `G`.
-pub fn material<G: Float>(spec: &MaterialSpec) -> Result<MaterialKind<G>> {
+/// The material in `G`, with the textures and materials its keys name from `inputs`.
+pub fn material<G: Float>(spec: &MaterialSpec, inputs: &mut dyn Inputs<G>) -> Result<MaterialKind<G>> {
     Ok(match *spec {
         MaterialSpec::Mirror { albedo } => Mirror::new(vec(albedo))?.into(),
-        MaterialSpec::Lambertian { albedo } => Lambertian::new(vec(albedo))?.into(),
+        MaterialSpec::Lambertian { ref albedo } => {
+            Lambertian::textured(inputs.texture("albedo", albedo, TextureUse::Color)?)?.into()
+        }
         MaterialSpec::Dielectric {
             index,
             albedo,
@@ -65,6 +68,14 @@ pub fn material<G: Float>(spec: &MaterialSpec) -> Result<MaterialKind<G>> {
             }
             light.into()
         }
+        MaterialSpec::NormalMap {
+            ref normal_map,
+            ref material,
+        } => NormalMap::new(
+            inputs.texture("normal_map", normal_map, TextureUse::NormalMap)?,
+            inputs.material("material", material)?,
+        )
+        .into(),
     })
 }
 
