@@ -185,6 +185,27 @@ impl SceneFile {
             .collect()
     }
 
+    /// The image files the scene's textures read, as [`SceneFile::build`] finds them
+    /// (relative to the scene file's folder): those of `[textures]` in the order of their
+    /// names, then those written in place in `[materials]`, each once.
+    pub fn image_files(&self) -> Vec<PathBuf> {
+        let folder = self.path.parent().unwrap_or(Path::new(""));
+        let inline = self.materials.values().flat_map(|m| m.textures()).filter_map(|(_, t)| match t {
+            TextureRef::Inline(spec) => Some(spec.as_ref()),
+            _ => None,
+        });
+        let mut files: Vec<PathBuf> = Vec::new();
+        for spec in self.textures.values().chain(inline) {
+            if let TextureSpec::Image { file, .. } = spec {
+                let path = folder.join(file);
+                if !files.contains(&path) {
+                    files.push(path);
+                }
+            }
+        }
+        files
+    }
+
     /// The `[render]` options.
     pub fn render(&self) -> &RenderOptions {
         &self.render

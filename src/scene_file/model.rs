@@ -208,6 +208,18 @@ pub enum MaterialSpec {
     },
 }
 
+impl MaterialSpec {
+    /// The textures its keys hold (a colour counts as a constant texture), each with its
+    /// key: the `match` names every kind, so a kind added with a texture key must say so.
+    pub fn textures(&self) -> Vec<(&'static str, &TextureRef)> {
+        match self {
+            Self::Lambertian { albedo } => vec![("albedo", albedo)],
+            Self::NormalMap { normal_map, .. } => vec![("normal_map", normal_map)],
+            Self::Mirror { .. } | Self::Dielectric { .. } | Self::Emissive { .. } => Vec::new(),
+        }
+    }
+}
+
 /// How a dielectric computes its reflectance.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
