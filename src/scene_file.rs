@@ -190,10 +190,14 @@ impl SceneFile {
     /// names, then those written in place in `[materials]`, each once.
     pub fn image_files(&self) -> Vec<PathBuf> {
         let folder = self.path.parent().unwrap_or(Path::new(""));
-        let inline = self.materials.values().flat_map(|m| m.textures()).filter_map(|(_, t)| match t {
-            TextureRef::Inline(spec) => Some(spec.as_ref()),
-            _ => None,
-        });
+        let inline = self
+            .materials
+            .values()
+            .flat_map(|m| m.textures())
+            .filter_map(|(_, t)| match t {
+                TextureRef::Inline(spec) => Some(spec.as_ref()),
+                _ => None,
+            });
         let mut files: Vec<PathBuf> = Vec::new();
         for spec in self.textures.values().chain(inline) {
             if let TextureSpec::Image { file, .. } = spec {

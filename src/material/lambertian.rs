@@ -65,8 +65,8 @@ impl<F: Float> Lambertian<F> {
                 Field::MatteAlbedo,
                 format!(
                     "each channel must be in [0, 1]: the texture's values reach from {} to {}",
-                    validate::number(lo),
-                    validate::number(hi)
+                    shortest(lo),
+                    shortest(hi)
                 ),
             ));
         }
@@ -98,6 +98,16 @@ impl<F: Float> Lambertian<F> {
     /// How directions are drawn.
     pub fn sampler(&self) -> CosineSampler {
         self.sampler
+    }
+}
+
+/// `x` as briefly as it reads back: as an `f32` if it is one (an image's value), else in
+/// full.
+fn shortest(x: f64) -> String {
+    if f64::from(x as f32) == x {
+        validate::number(x as f32)
+    } else {
+        validate::number(x)
     }
 }
 

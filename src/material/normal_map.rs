@@ -68,8 +68,10 @@ impl<F: Float, M> NormalMap<F, M> {
         let c = self.map.eval(hit);
         let (one, two) = (F::one(), F::one() + F::one());
         let local = Vec3::new(c.x * two - one, c.y * two - one, c.z * two - one);
-        // A map of zero length says nothing: the normal stays.
-        let Some(local) = local.try_normalize() else {
+        // Straight up, the normal stays as it is, bit for bit (the frame's sum would turn a
+        // −0 component into +0); of zero length, the map says nothing.
+        let up = local.x == F::zero() && local.y == F::zero() && local.z > F::zero();
+        let Some(local) = local.try_normalize().filter(|_| !up) else {
             return *hit;
         };
         let n = Frame::new(outward, hit.dpdu).to_world(local);

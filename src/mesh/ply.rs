@@ -2,7 +2,7 @@
 //!
 //! The `vertex` element gives the positions (`x y z`, float or double), and where the
 //! header declares them the normals (`nx ny nz`) and texture coordinates (`u v`, `s t` or
-//! `texture_u texture_v`, the names Mitsuba 3 reads), float or double too; the `face`
+//! `texture_u texture_v`, the names Mitsuba 3 reads), of any number type; the `face`
 //! element gives the polygons (`vertex_indices` or `vertex_index`, a list of any integer
 //! type). Other elements and properties are read past and ignored. Vertices and faces are
 //! numbered from 0, as the file's indices count them.
@@ -64,10 +64,24 @@ impl PropertyAccess for Vertex {
         }
     }
 
-    // Reached for the types not handled above: only an integer property of those read is
-    // refused (the header check rejects those first, with a clearer message).
-    fn set_property(&mut self, name: &str, _: Property) -> PropertyAccessResult {
+    // Reached for the types not handled above: an integer normal or texture coordinate is
+    // taken as its value; an integer position, or a list where a number belongs, is refused
+    // (the header check rejects those first, with a clearer message).
+    fn set_property(&mut self, name: &str, property: Property) -> PropertyAccessResult {
+        let value = match property {
+            Property::Char(v) => f64::from(v),
+            Property::UChar(v) => f64::from(v),
+            Property::Short(v) => f64::from(v),
+            Property::UShort(v) => f64::from(v),
+            Property::Int(v) => f64::from(v),
+            Property::UInt(v) => f64::from(v),
+            _ => f64::NAN,
+        };
         match slot(name) {
+            Some(i) if i >= 3 && !value.is_nan() => {
+                self.0[i] = value;
+                PropertyAccessResult::Set
+            }
             Some(_) => PropertyAccessResult::UnsupportedType,
             None => PropertyAccessResult::Ignored,
         }
@@ -259,7 +273,7 @@ fn check_header(header: &Header) -> std::result::Result<(), String> {
             .ok_or_else(|| format!("the file has no {name} element"))
     };
     let vertex = element("vertex")?;
-    for name in VERTEX_NAMES {
+    for name in ["x", "y", "z"] {
         match vertex.properties.get(name).map(|p| &p.data_type) {
             Some(PropertyType::Scalar(ScalarType::Float | ScalarType::Double)) => {}
             Some(other) => {
@@ -268,10 +282,13 @@ fn check_header(header: &Header) -> std::result::Result<(), String> {
                     type_name(other)
                 ));
             }
-            None if ["x", "y", "z"].contains(&name) => {
-                return Err(format!("element vertex: no property {name}"));
-            }
-            None => {}
+            None => return Err(format!("element vertex: no property {name}")),
+        }
+    }
+    // A normal's or a texture coordinate's component may be of any number type.
+    for name in &VERTEX_NAMES[3..] {
+        if let Some(PropertyType::List(..)) = vertex.properties.get(*name).map(|p| &p.data_type) {
+            return Err(format!("element vertex: property {name} is a list, not a number"));
         }
     }
     let face = element("face")?;
