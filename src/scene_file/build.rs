@@ -11,7 +11,7 @@ use super::transform::Placement;
 use crate::aabb::Aabb;
 use crate::error::{Error, Field, Result};
 use crate::float::Float;
-use crate::material::MaterialKind;
+use crate::material::{Material, MaterialKind};
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
 use crate::shape::{Hittable, Mesh, ShapeKind};
@@ -299,7 +299,8 @@ fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
         }
     }
     summary.lights = scene.lights().len();
-    let emits = |m: &MaterialKind<F>| matches!(m, MaterialKind::Emissive(_));
+    // Asked of the material, not its kind: a normal map over an emitter still emits.
+    let emits = |m: &MaterialKind<F>| m.emits().is_some();
     summary.emitters = scene.objects().iter().filter(|o| emits(&o.material)).count();
     summary.sampled_emitters = scene.emitters().len();
     summary.bounds = bounds;

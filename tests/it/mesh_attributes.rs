@@ -16,8 +16,11 @@ fn mesh_error(path: &Path) -> String {
     }
 }
 
-/// Each triangle's corners as (position, normal, uv), however the reader numbered them.
-fn corners(m: &MeshData) -> Vec<[([f64; 3], [f64; 3], [f64; 2]); 3]> {
+/// A corner of a triangle: position, normal, texture coordinates.
+type Corner = ([f64; 3], [f64; 3], [f64; 2]);
+
+/// Each triangle's corners, however the reader numbered them.
+fn corners(m: &MeshData) -> Vec<[Corner; 3]> {
     let n = m.normals.as_ref().unwrap();
     let uv = m.uvs.as_ref().unwrap();
     let corner = |i: u32| {
@@ -214,4 +217,36 @@ fn a_scene_files_mesh_places_its_normals_as_normals_and_flips_v_as_mitsuba_does(
             .unwrap()[2],
         [0.0, 0.75]
     );
+}
+
+#[test]
+fn a_zero_normal_adds_nothing_and_three_shade_with_the_face() {
+    use raytrace::{Mesh, Ray};
+    let v = vec![
+        Vec3::new(0.0, 0.0, -2.0),
+        Vec3::new(1.0, 0.0, -2.0),
+        Vec3::new(0.0, 1.0, -2.0),
+    ];
+    let lean = Vec3::new(0.6, 0.0, 0.8);
+    let centre = Vec3::new(1.0 / 3.0, 1.0 / 3.0, -2.0);
+    let ray = Ray::new(
+        Vec3::new(0.3, 0.3, 0.0),
+        (centre - Vec3::new(0.3, 0.3, 0.0)).normalize(),
+    );
+    let shade = |normals: Vec<Vec3<f64>>| {
+        let mesh = Mesh::new(v.clone(), vec![[0, 1, 2]])
+            .unwrap()
+            .with_normals(normals)
+            .unwrap();
+        raytrace::shape::hit(&mesh, &ray, f64::INFINITY).unwrap()
+    };
+    let one_zero = shade(vec![Vec3::zero(), lean, lean * 3.0]);
+    assert!((one_zero.shading_normal - lean).length() < 1e-15 && one_zero.smooth);
+    let all_zero = shade(vec![Vec3::zero(); 3]);
+    assert_eq!(all_zero.shading_normal, all_zero.normal);
+    assert!(!all_zero.smooth);
+    let nan = Mesh::new(v.clone(), vec![[0, 1, 2]])
+        .unwrap()
+        .with_normals(vec![Vec3::new(f64::NAN, 0.0, 1.0); 3]);
+    assert!(nan.unwrap_err().to_string().contains("vertex 0 is not finite"));
 }
