@@ -11,6 +11,7 @@ use raytrace::material::Reflectance;
 use raytrace::prelude::*;
 use raytrace::scene_file::{
     BackgroundSpec, CameraSpec, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec, RenderOptions, SceneFile,
+    TextureRef,
 };
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -130,7 +131,7 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
                 let (kind, spec) = material(&o.material);
                 let name = format!("{kind}_{}", named.len());
                 file.materials.insert(name.clone(), spec);
-                named.push((o.material, name.clone()));
+                named.push((o.material.clone(), name.clone()));
                 name
             }
         };
@@ -165,7 +166,7 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
 }
 
 fn material(m: &MaterialKind<f64>) -> (&'static str, MaterialSpec) {
-    match *m {
+    match m {
         MaterialKind::Mirror(m) => (
             "mirror",
             MaterialSpec::Mirror {
@@ -175,7 +176,10 @@ fn material(m: &MaterialKind<f64>) -> (&'static str, MaterialSpec) {
         MaterialKind::Lambertian(m) => (
             "matte",
             MaterialSpec::Lambertian {
-                albedo: m.albedo().to_f64(),
+                albedo: match m.albedo().as_constant() {
+                    Some(c) => TextureRef::Color(c.to_f64()),
+                    None => unimplemented!("the examples' matte surfaces are of one colour"),
+                },
             },
         ),
         MaterialKind::Dielectric(m) => (
@@ -197,6 +201,7 @@ fn material(m: &MaterialKind<f64>) -> (&'static str, MaterialSpec) {
                 albedo: (m.albedo() != Vec3::zero()).then(|| m.albedo().to_f64()),
             },
         ),
+        MaterialKind::NormalMap(_) => unimplemented!("the examples use no normal map"),
     }
 }
 

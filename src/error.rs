@@ -48,6 +48,13 @@ pub enum Error {
         /// What is wrong, naming the element (`face 12`, `vertex 3`, `line 40`, …).
         message: String,
     },
+    /// An image file (a texture) that cannot be loaded.
+    Image {
+        /// The image file.
+        path: PathBuf,
+        /// What is wrong: missing, not an image, malformed, too large, a value not finite.
+        message: String,
+    },
     /// Image tiles that do not make one image (or a tile file that cannot be read).
     Tiles(String),
     /// A malformed PFM file.
@@ -78,7 +85,9 @@ impl fmt::Display for Error {
                 message,
                 ..
             } => write!(f, "{}: {location}: {message}", path.display()),
-            Self::Mesh { path, message } => write!(f, "{}: {message}", path.display()),
+            Self::Mesh { path, message } | Self::Image { path, message } => {
+                write!(f, "{}: {message}", path.display())
+            }
             Self::Tiles(reason) => write!(f, "tiles: {reason}"),
             Self::Pfm(reason) => write!(f, "malformed PFM: {reason}"),
         }

@@ -8,6 +8,7 @@ mod emissive;
 mod kind;
 mod lambertian;
 mod mirror;
+mod normal_map;
 mod shared;
 
 pub use bsdf::{BsdfSample, Eval, Lobes};
@@ -16,6 +17,7 @@ pub use emissive::{Emission, Emissive};
 pub use kind::MaterialKind;
 pub use lambertian::{CosineSampler, Lambertian};
 pub use mirror::Mirror;
+pub use normal_map::NormalMap;
 pub use shared::SharedMaterial;
 
 use crate::float::Float;

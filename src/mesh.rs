@@ -19,12 +19,33 @@ use std::path::Path;
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct MeshData {
     /// The vertex positions, every coordinate finite: a PLY file's in its order; an OBJ
-    /// file's those its faces use, in the order first used, object after object.
+    /// file's those its faces use, in the order first used, object after object (a
+    /// position its faces use with two texture coordinates or two normals is two
+    /// vertices).
     pub positions: Vec<Vec3<f64>>,
+    /// A normal per vertex, every coordinate finite, as the file gives it (any length;
+    /// zero where an OBJ object has none and another has): OBJ `vn`, PLY `nx ny nz`.
+    /// `None` if the file has none.
+    pub normals: Option<Vec<Vec3<f64>>>,
+    /// Texture coordinates `(u, v)` per vertex, finite, as the file writes them (zero where
+    /// an OBJ object has none and another has; see [`flips_tex_coords`] for the
+    /// convention of `v`): OBJ `vt`, PLY `u v`, `s t` or `texture_u texture_v`. `None` if
+    /// the file has none.
+    pub uvs: Option<Vec<[f64; 2]>>,
     /// The triangles, as indices into `positions`, each with a non-zero area.
     pub triangles: Vec<[u32; 3]>,
     /// Faces of the file skipped for having no area (repeated or collinear vertices).
     pub skipped_degenerate: usize,
+}
+
+/// Whether texture coordinates read from the file at `path` are flipped (`v ↦ 1 − v`) to
+/// reach the renderer's convention, in which `v = 0` is an image's top row: Mitsuba 3's
+/// default `flip_tex_coords`, `true` for OBJ (whose `vt` counts `v` up from the image's
+/// bottom) and `false` for PLY.
+pub fn flips_tex_coords(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("obj"))
 }
 
 /// Loads the mesh at `path`, choosing the format by its extension (`.obj` or `.ply`, in any

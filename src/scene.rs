@@ -95,11 +95,12 @@ impl<F: Float> EnumScene<F> {
                 ShapeKind::Mesh(m) => Box::new(Arc::clone(m)),
                 ShapeKind::Instance(i) => Box::new(Arc::clone(i)),
             };
-            let material: SharedMaterial<F> = match o.material {
-                MaterialKind::Mirror(m) => Arc::new(m).into(),
-                MaterialKind::Lambertian(m) => Arc::new(m).into(),
-                MaterialKind::Dielectric(m) => Arc::new(m).into(),
-                MaterialKind::Emissive(m) => Arc::new(m).into(),
+            let material: SharedMaterial<F> = match &o.material {
+                MaterialKind::Mirror(m) => Arc::new(*m).into(),
+                MaterialKind::Lambertian(m) => Arc::new(m.clone()).into(),
+                MaterialKind::Dielectric(m) => Arc::new(*m).into(),
+                MaterialKind::Emissive(m) => Arc::new(*m).into(),
+                MaterialKind::NormalMap(m) => Arc::clone(m).into(),
             };
             scene.add(shape, material);
         }

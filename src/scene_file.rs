@@ -38,6 +38,8 @@ mod integer;
 mod location;
 mod make;
 mod model;
+mod resolve;
+mod texture_spec;
 mod transform;
 mod triple;
 mod warnings;
@@ -48,6 +50,7 @@ pub use model::{
     BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
     RenderOptions, Scale, Triple,
 };
+pub use texture_spec::{TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
 pub use warnings::Warning;
 
@@ -70,6 +73,9 @@ pub struct SceneFile {
     pub camera: CameraSpec,
     /// `[background]`.
     pub background: BackgroundSpec,
+    /// `[textures.NAME]`: the textures colour keys may refer to by name.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub textures: BTreeMap<String, TextureSpec>,
     /// `[materials.NAME]`: the materials objects refer to by name.
     #[serde(skip_serializing_if = "BTreeMap::is_empty")]
     pub materials: BTreeMap<String, MaterialSpec>,
@@ -167,8 +173,8 @@ impl SceneFile {
     }
 
     /// The other files the scene is made from, as [`SceneFile::build`] finds them
-    /// (relative to the scene file's folder): the environment map's, then each mesh's in
-    /// the order of `[[objects]]`.
+    /// (relative to the scene file's folder): the environment map's, each mesh's in the
+    /// order of `[[objects]]`, then the textures' [images](Self::image_files).
     pub fn input_files(&self) -> Vec<PathBuf> {
         let folder = self.path.parent().unwrap_or(Path::new(""));
         let map = match &self.background {
@@ -179,7 +185,32 @@ impl SceneFile {
             ObjectSpec::Mesh { file, .. } => Some(folder.join(file)),
             _ => None,
         });
-        map.into_iter().chain(meshes).collect()
+        map.into_iter().chain(meshes).chain(self.image_files()).collect()
+    }
+
+    /// The image files the scene's textures read, as [`SceneFile::build`] finds them
+    /// (relative to the scene file's folder): those of `[textures]` in the order of their
+    /// names, then those written in place in `[materials]`, each once.
+    pub fn image_files(&self) -> Vec<PathBuf> {
+        let folder = self.path.parent().unwrap_or(Path::new(""));
+        let inline = self
+            .materials
+            .values()
+            .flat_map(|m| m.textures())
+            .filter_map(|(_, t)| match t {
+                TextureRef::Inline(spec) => Some(spec.as_ref()),
+                _ => None,
+            });
+        let mut files: Vec<PathBuf> = Vec::new();
+        for spec in self.textures.values().chain(inline) {
+            if let TextureSpec::Image { file, .. } = spec {
+                let path = folder.join(file);
+                if !files.contains(&path) {
+                    files.push(path);
+                }
+            }
+        }
+        files
     }
 
     /// The `[render]` options.

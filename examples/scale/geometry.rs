@@ -107,7 +107,7 @@ impl Geometry {
         match self {
             Self::Spheres(spheres) => {
                 for &[x, y, z, r] in spheres {
-                    scene.add(Sphere::new(v([x, y, z]), lit(r.into()))?, matte);
+                    scene.add(Sphere::new(v([x, y, z]), lit(r.into()))?, matte.clone());
                 }
             }
             Self::Mesh { vertices, triangles } => {

@@ -41,6 +41,14 @@ pub enum Field {
     EmittedRadiance,
     /// [`Emissive::with_albedo`](crate::Emissive::with_albedo)'s albedo.
     EmissiveAlbedo,
+    /// [`Checkerboard::new`](crate::texture::Checkerboard::new)'s first colour.
+    CheckerboardColor0,
+    /// [`Checkerboard::new`](crate::texture::Checkerboard::new)'s second colour.
+    CheckerboardColor1,
+    /// [`UvMap::new`](crate::texture::UvMap::new)'s scale.
+    TextureScale,
+    /// [`UvMap::new`](crate::texture::UvMap::new)'s offset.
+    TextureOffset,
     /// [`PointLight::new`](crate::PointLight::new)'s position.
     LightPosition,
     /// [`PointLight::new`](crate::PointLight::new)'s intensity.
@@ -111,6 +119,10 @@ impl Field {
             Self::DielectricAlbedo => "dielectric albedo",
             Self::EmittedRadiance => "emitted radiance",
             Self::EmissiveAlbedo => "emissive albedo",
+            Self::CheckerboardColor0 => "checkerboard colour 0",
+            Self::CheckerboardColor1 => "checkerboard colour 1",
+            Self::TextureScale => "texture uv scale",
+            Self::TextureOffset => "texture uv offset",
             Self::LightPosition => "light position",
             Self::LightIntensity => "light intensity",
             Self::BackgroundColor => "background colour",

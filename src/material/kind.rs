@@ -1,13 +1,18 @@
 //! [`MaterialKind`]: the enum fast path over the concrete materials.
 
-use super::{BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror, Scatter};
+use super::{
+    BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror, NormalMap, Scatter,
+};
 use crate::float::Float;
 use crate::shape::Hit;
 use crate::vec3::Vec3;
 use rand::Rng;
+use std::sync::Arc;
 
 /// The enum fast path: every concrete material, dispatched by `match`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// Not `Copy`: a matte surface's albedo may be a texture, shared behind an `Arc`.
+#[derive(Clone, Debug, PartialEq)]
 pub enum MaterialKind<F> {
     /// A [`Mirror`].
     Mirror(Mirror<F>),
@@ -17,6 +22,9 @@ pub enum MaterialKind<F> {
     Dielectric(Dielectric<F>),
     /// A light-giving [`Emissive`] surface.
     Emissive(Emissive<F>),
+    /// Another material under a [`NormalMap`] (behind an `Arc`: the wrapped material is
+    /// one of these).
+    NormalMap(Arc<NormalMap<F>>),
 }
 
 /// `match` on a [`MaterialKind`], the same call on every variant: no arm can be left out.
@@ -27,6 +35,7 @@ macro_rules! each_material {
             MaterialKind::Lambertian($m) => $call,
             MaterialKind::Dielectric($m) => $call,
             MaterialKind::Emissive($m) => $call,
+            MaterialKind::NormalMap($m) => $call,
         }
     };
 }
@@ -87,12 +96,18 @@ impl<F> From<Emissive<F>> for MaterialKind<F> {
     }
 }
 
+impl<F> From<NormalMap<F>> for MaterialKind<F> {
+    fn from(m: NormalMap<F>) -> Self {
+        Self::NormalMap(Arc::new(m))
+    }
+}
+
 impl<F: Float> MaterialKind<F> {
     /// This material in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
     pub fn cast<G: Float>(&self) -> crate::error::Result<MaterialKind<G>> {
         Ok(match self {
             Self::Mirror(m) => Mirror::new(m.albedo().cast())?.into(),
-            Self::Lambertian(m) => Lambertian::new(m.albedo().cast())?
+            Self::Lambertian(m) => Lambertian::textured(m.albedo().cast::<G>()?)?
                 .with_sampler(m.sampler())
                 .into(),
             Self::Dielectric(m) => Dielectric::new(crate::float::to(m.refractive_index()))?
@@ -100,6 +115,7 @@ impl<F: Float> MaterialKind<F> {
                 .with_reflectance(m.reflectance())
                 .into(),
             Self::Emissive(m) => m.cast()?.into(),
+            Self::NormalMap(m) => m.cast()?.into(),
         })
     }
 }

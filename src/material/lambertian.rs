@@ -1,10 +1,11 @@
 //! An ideal matte (Lambertian) surface.
 
 use super::{BsdfSample, Emission, Eval, Lobes, Material, Scatter};
-use crate::error::Result;
+use crate::error::{Error, Field, Result};
 use crate::float::{Float, lit};
 use crate::sampling::{cosine_direction, cosine_pdf, lambertian_direction};
 use crate::shape::Hit;
+use crate::texture::Texture;
 use crate::validate;
 use crate::vec3::{Color, Vec3};
 use rand::Rng;
@@ -14,9 +15,13 @@ use std::f64::consts::PI;
 /// the specification's tangent-sphere method ([`lambertian_direction`]), colour absorbed
 /// by the albedo, `C⁺ = A ∘ C⁻`. It reflects from both faces (the normal it shades with
 /// faces the ray).
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// The albedo is a [`Texture`]: a constant ([`Lambertian::new`], the specification's
+/// material) or one that varies over the surface ([`Lambertian::textured`]), looked up at
+/// the hit's `uv`.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Lambertian<F> {
-    albedo: Color<F>,
+    albedo: Texture<F>,
     sampler: CosineSampler,
 }
 
@@ -37,7 +42,36 @@ impl<F: Float> Lambertian<F> {
     /// A matte surface with albedo `A`; each channel must lie in `[0, 1]`.
     pub fn new(albedo: Color<F>) -> Result<Self> {
         Ok(Self {
-            albedo: validate::albedo(crate::error::Field::MatteAlbedo, albedo)?,
+            albedo: Texture::Constant(validate::albedo(Field::MatteAlbedo, albedo)?),
+            sampler: CosineSampler::TangentSphere,
+        })
+    }
+
+    /// A matte surface whose albedo is `texture`, every value of which must lie in
+    /// `[0, 1]` ([`Texture::range`]: an 8-bit image always does, a float image or a
+    /// checkerboard may not).
+    ///
+    /// # Errors
+    /// [`Error::InvalidValue`](crate::Error::InvalidValue) (`Field::MatteAlbedo`) for a
+    /// texture with a value outside `[0, 1]`.
+    pub fn textured(texture: impl Into<Texture<F>>) -> Result<Self> {
+        let texture = texture.into();
+        if let Some(c) = texture.as_constant() {
+            return Self::new(c);
+        }
+        let [lo, hi] = texture.range();
+        if !(lo >= 0.0 && hi <= 1.0) {
+            return Err(Error::invalid(
+                Field::MatteAlbedo,
+                format!(
+                    "each channel must be in [0, 1]: the texture's values reach from {} to {}",
+                    shortest(lo),
+                    shortest(hi)
+                ),
+            ));
+        }
+        Ok(Self {
+            albedo: texture,
             sampler: CosineSampler::TangentSphere,
         })
     }
@@ -45,7 +79,7 @@ impl<F: Float> Lambertian<F> {
     /// A matte surface of an albedo already checked, with the specification's sampler.
     pub(super) fn from_valid(albedo: Color<F>) -> Self {
         Self {
-            albedo,
+            albedo: Texture::Constant(albedo),
             sampler: CosineSampler::TangentSphere,
         }
     }
@@ -57,8 +91,8 @@ impl<F: Float> Lambertian<F> {
     }
 
     /// The albedo `A`.
-    pub fn albedo(&self) -> Color<F> {
-        self.albedo
+    pub fn albedo(&self) -> &Texture<F> {
+        &self.albedo
     }
 
     /// How directions are drawn.
@@ -67,14 +101,24 @@ impl<F: Float> Lambertian<F> {
     }
 }
 
+/// `x` as briefly as it reads back: as an `f32` if it is one (an image's value), else in
+/// full.
+fn shortest(x: f64) -> String {
+    if f64::from(x as f32) == x {
+        validate::number(x as f32)
+    } else {
+        validate::number(x)
+    }
+}
+
 impl<F: Float> Lambertian<F> {
-    /// The BSDF sample of direction `d` drawn about the unit normal `n`: weight `A`
-    /// (`(A/π)·cos θ/(cos θ/π)`), density [`cosine_pdf`](crate::sampling::cosine_pdf).
+    /// The BSDF sample of direction `d` drawn about the unit normal `n` at `hit`: weight
+    /// `A` (`(A/π)·cos θ/(cos θ/π)`), density [`cosine_pdf`](crate::sampling::cosine_pdf).
     #[inline]
-    pub(super) fn sample_toward(&self, n: Vec3<F>, d: Vec3<F>) -> BsdfSample<F> {
+    pub(super) fn sample_toward(&self, hit: &Hit<F>, n: Vec3<F>, d: Vec3<F>) -> BsdfSample<F> {
         BsdfSample {
             direction: d,
-            weight: self.albedo,
+            weight: self.albedo.eval(hit),
             pdf: cosine_pdf(n, d),
             lobe: Lobes::REFLECTION | Lobes::DIFFUSE,
         }
@@ -82,10 +126,10 @@ impl<F: Float> Lambertian<F> {
 }
 
 impl<F: Float> Material<F> for Lambertian<F> {
-    /// No: it has no texture.
+    /// Only if its albedo is not a constant.
     #[inline]
     fn reads_coordinates(&self) -> bool {
-        false
+        self.albedo.reads_coordinates()
     }
 
     #[inline]
@@ -98,7 +142,7 @@ impl<F: Float> Material<F> for Lambertian<F> {
     fn eval(&self, hit: &Hit<F>, _: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
         let cos = hit.shading_normal.dot(wi);
         (cos > F::zero()).then(|| Eval {
-            colour: self.albedo * (F::one() / lit::<F>(PI)),
+            colour: self.albedo.eval(hit) * (F::one() / lit::<F>(PI)),
             scale: cos,
         })
     }
@@ -124,6 +168,6 @@ impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Lambertian<F> {
             CosineSampler::TangentSphere => lambertian_direction(n, rng),
             CosineSampler::ClosedForm => cosine_direction(n, rng),
         };
-        Some(self.sample_toward(n, d))
+        Some(self.sample_toward(hit, n, d))
     }
 }

@@ -36,6 +36,16 @@ pub(super) enum Problem {
         /// How many it has.
         count: usize,
     },
+    /// A vertex attribute (a normal's or a texture coordinate's component) is NaN or
+    /// infinite.
+    NonFiniteAttribute {
+        /// The vertex.
+        vertex: usize,
+        /// The component, as the file names it: `nx`, `u`, …
+        name: &'static str,
+        /// The value itself.
+        value: f64,
+    },
     /// Every face was degenerate (or there were none).
     NoTriangles {
         /// How many faces were skipped for having no area.
@@ -68,6 +78,9 @@ impl fmt::Display for Problem {
                 f,
                 "face {face}: vertex index {index} out of range (the mesh has {vertices} vertices)"
             ),
+            Self::NonFiniteAttribute { vertex, name, value } => {
+                write!(f, "vertex {vertex}: {name} is {}", describe(value))
+            }
             Self::TooFewVertices { face, count } => {
                 write!(f, "face {face}: {count} vertices (a face needs at least 3)")
             }
@@ -87,6 +100,33 @@ pub(super) fn check_positions(positions: &[Vec3<f64>]) -> Result<(), Problem> {
         for (axis, value) in [('x', p.x), ('y', p.y), ('z', p.z)] {
             if !value.is_finite() {
                 return Err(Problem::NonFinite { vertex, axis, value });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Checks that every normal and texture coordinate is finite; the first that is not is the
+/// problem, its component named as `names` (`["nx", "ny", "nz"]`, `["u", "v"]`) say.
+pub(super) fn check_attributes(
+    normals: Option<&[Vec3<f64>]>,
+    uvs: Option<&[[f64; 2]]>,
+    names: ([&'static str; 3], [&'static str; 2]),
+) -> Result<(), Problem> {
+    let bad = |vertex, name, value: f64| {
+        (!value.is_finite()).then_some(Problem::NonFiniteAttribute { vertex, name, value })
+    };
+    for (vertex, n) in normals.unwrap_or_default().iter().enumerate() {
+        for (name, value) in names.0.into_iter().zip([n.x, n.y, n.z]) {
+            if let Some(p) = bad(vertex, name, value) {
+                return Err(p);
+            }
+        }
+    }
+    for (vertex, uv) in uvs.unwrap_or_default().iter().enumerate() {
+        for (name, value) in names.1.into_iter().zip(*uv) {
+            if let Some(p) = bad(vertex, name, value) {
+                return Err(p);
             }
         }
     }

@@ -1,12 +1,13 @@
 //! Reading Wavefront OBJ files with `tobj`.
 //!
-//! Only positions and faces are read: normals (`vn`), texture coordinates (`vt`) and
-//! materials (`mtllib`, `usemtl`) are dropped for now, so a missing `.mtl` file is no
-//! error. Every object and group of the file goes into one mesh. `l` lines count
-//! as faces, as `tobj` reads them.
+//! Positions, faces, normals (`vn`) and texture coordinates (`vt`) are read, through
+//! `tobj`'s single-index loading: each distinct `v/vt/vn` triple a face uses becomes one
+//! vertex. Materials (`mtllib`, `usemtl`) are dropped, so a missing `.mtl` file is no
+//! error. Every object and group of the file goes into one mesh. `l` lines count as
+//! faces, as `tobj` reads them.
 
 use super::MeshData;
-use super::check::{Problem, Triangulator, check_positions};
+use super::check::{Problem, Triangulator, check_attributes, check_positions};
 use super::source::Source;
 use crate::error::{Error, Result};
 use crate::vec3::Vec3;
@@ -24,7 +25,7 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
     // the file, then split into fans by the same code as PLY's.
     let options = tobj::LoadOptions {
         triangulate: false,
-        single_index: false,
+        single_index: true,
         ignore_points: false,
         ignore_lines: false,
     };
@@ -43,15 +44,31 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
     // tobj keeps, per model, the vertices its faces use, in the order they are first used; the
     // models' vertices are put one after the other and their indices offset to match.
     let mut positions = Vec::new();
+    let (mut normals, mut uvs) = (Attribute::new(Vec3::zero()), Attribute::new([0.0; 2]));
     let mut faces: Vec<Vec<u32>> = Vec::new();
     for model in &models {
         let mesh = &model.mesh;
         let offset = u32::try_from(positions.len()).map_err(|_| fail(too_many()))?;
+        let count = mesh.positions.len() / 3;
         positions.extend(
             mesh.positions
                 .chunks_exact(3)
                 .map(|p| Vec3::new(p[0], p[1], p[2])),
         );
+        let partial = |what: &str| {
+            fail(format!(
+                "object `{}`: some of its faces' vertices have {what} and others have none; \
+                 give every vertex of an object one, or none",
+                model.name
+            ))
+        };
+        normals
+            .extend(offset as usize, count, &mesh.normals, 3, |n| {
+                Vec3::new(n[0], n[1], n[2])
+            })
+            .map_err(|()| partial("normals (`vn`)"))?;
+        uvs.extend(offset as usize, count, &mesh.texcoords, 2, |t| [t[0], t[1]])
+            .map_err(|()| partial("texture coordinates (`vt`)"))?;
         let arities = if mesh.face_arities.is_empty() {
             vec![3; mesh.indices.len() / 3]
         } else {
@@ -67,16 +84,26 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
     if u32::try_from(positions.len()).is_err() {
         return Err(fail(too_many()));
     }
+    let (normals, uvs) = (normals.finish(positions.len()), uvs.finish(positions.len()));
 
     // tobj's numbering of vertices is not the file's, so a problem is located in the text.
     let located = |problem: Problem| fail(locate(path, &problem.to_string()));
     check_positions(&positions).map_err(located)?;
+    check_attributes(
+        normals.as_deref(),
+        uvs.as_deref(),
+        (["vn x", "vn y", "vn z"], ["vt u", "vt v"]),
+    )
+    .map_err(located)?;
     let mut mesh = Triangulator::new(positions);
     for (number, face) in faces.into_iter().enumerate() {
         mesh.add_face(number, face.into_iter().map(i64::from))
             .map_err(located)?;
     }
-    mesh.finish().map_err(|p| fail(p.to_string()))
+    let mut mesh = mesh.finish().map_err(|p| fail(p.to_string()))?;
+    mesh.normals = normals;
+    mesh.uvs = uvs;
+    Ok(mesh)
 }
 
 /// The message for a mesh whose vertices cannot be indexed by `u32`.
@@ -84,7 +111,8 @@ fn too_many() -> String {
     format!("more than {} vertices", u32::MAX)
 }
 
-/// Finds the first line of the OBJ file at `path` with a non-finite coordinate, a face of
+/// Finds the first line of the OBJ file at `path` with a non-finite coordinate (of a
+/// position, a normal or a texture coordinate), a face of
 /// fewer than three vertices or a vertex index out of range, and describes it with its line
 /// number and the file's numbering (from 1, as OBJ indices count); `fallback` if none is found.
 fn locate(path: &Path, fallback: &str) -> String {
@@ -110,6 +138,19 @@ fn locate(path: &Path, fallback: &str) -> String {
                         let problem = Problem::NonFinite { vertex, axis, value };
                         return format!("line {line}: {problem}");
                     }
+                }
+            }
+            Some(kind @ ("vn" | "vt")) => {
+                let what = if kind == "vn" {
+                    "normal"
+                } else {
+                    "texture coordinate"
+                };
+                if let Some(value) = words
+                    .filter_map(|w| w.parse::<f64>().ok())
+                    .find(|v| !v.is_finite())
+                {
+                    return format!("line {line}: a {what} ({kind}) is {value}: not finite");
                 }
             }
             Some("f" | "l") => {
@@ -151,4 +192,54 @@ fn face_problem<'a>(
             vertices,
         })
     })
+}
+
+/// A per-vertex attribute (normals, texture coordinates) gathered model after model: a
+/// model without any gets zeros if another has some (as Mitsuba 3's OBJ reader gives
+/// zeros to a vertex without them).
+struct Attribute<T> {
+    values: Vec<T>,
+    zero: T,
+    /// Whether any model had the attribute.
+    seen: bool,
+}
+
+impl<T: Copy> Attribute<T> {
+    fn new(zero: T) -> Self {
+        Self {
+            values: Vec::new(),
+            zero,
+            seen: false,
+        }
+    }
+
+    /// Adds a model's `count` vertices, which start at vertex `start`: from `flat`, `width`
+    /// numbers each, or nothing if it has none; `Err` if it has some but not one per
+    /// vertex.
+    fn extend(
+        &mut self,
+        start: usize,
+        count: usize,
+        flat: &[f64],
+        width: usize,
+        make: impl Fn(&[f64]) -> T,
+    ) -> Result<(), ()> {
+        if flat.is_empty() {
+            return Ok(());
+        }
+        if flat.len() != count * width {
+            return Err(());
+        }
+        self.seen = true;
+        self.values.resize(start, self.zero);
+        self.values.extend(flat.chunks_exact(width).map(make));
+        Ok(())
+    }
+
+    /// The values of all `vertices` (zeros for the models that had none); `None` if no
+    /// model had any.
+    fn finish(mut self, vertices: usize) -> Option<Vec<T>> {
+        self.values.resize(vertices, self.zero);
+        self.seen.then_some(self.values)
+    }
 }

@@ -1,12 +1,14 @@
 //! Reading PLY files (ascii, binary little and big endian) with `ply-rs-bw`.
 //!
-//! The `vertex` element gives the positions (`x y z`, float or double) and the `face`
-//! element the polygons (`vertex_indices` or `vertex_index`, a list of any integer type);
-//! other elements and properties are read past and ignored. Vertices and faces are
+//! The `vertex` element gives the positions (`x y z`, float or double), and where the
+//! header declares them the normals (`nx ny nz`) and texture coordinates (`u v`, `s t` or
+//! `texture_u texture_v`, the names Mitsuba 3 reads), of any number type; the `face`
+//! element gives the polygons (`vertex_indices` or `vertex_index`, a list of any integer
+//! type). Other elements and properties are read past and ignored. Vertices and faces are
 //! numbered from 0, as the file's indices count them.
 
 use super::MeshData;
-use super::check::{Problem, Triangulator, check_positions};
+use super::check::{Problem, Triangulator, check_attributes, check_positions};
 use super::source::Source;
 use crate::error::{Error, Result};
 use crate::vec3::Vec3;
@@ -19,12 +21,33 @@ use std::path::Path;
 /// The names a face's index list goes by (the second is older, and still common).
 const INDEX_NAMES: [&str; 2] = ["vertex_indices", "vertex_index"];
 
-/// A vertex's position; properties other than `x y z` are ignored.
-struct Vertex([f64; 3]);
+/// The texture coordinates' names, in the order they are looked for.
+const UV_NAMES: [[&str; 2]; 3] = [["u", "v"], ["s", "t"], ["texture_u", "texture_v"]];
+
+/// The names of the vertex properties read: position, normal, texture coordinates.
+const VERTEX_NAMES: [&str; 12] = [
+    "x",
+    "y",
+    "z",
+    "nx",
+    "ny",
+    "nz",
+    "u",
+    "v",
+    "s",
+    "t",
+    "texture_u",
+    "texture_v",
+];
+
+/// A vertex's position, normal and texture coordinates, in the order of
+/// [`VERTEX_NAMES`] (a texture coordinate under any of its names); other properties are
+/// ignored.
+struct Vertex([f64; 8]);
 
 impl PropertyAccess for Vertex {
     fn new() -> Self {
-        Self([0.0; 3])
+        Self([0.0; 8])
     }
 
     fn set_float(&mut self, name: &str, value: f32) -> PropertyAccessResult {
@@ -32,7 +55,7 @@ impl PropertyAccess for Vertex {
     }
 
     fn set_double(&mut self, name: &str, value: f64) -> PropertyAccessResult {
-        match axis(name) {
+        match slot(name) {
             Some(i) => {
                 self.0[i] = value;
                 PropertyAccessResult::Set
@@ -41,19 +64,35 @@ impl PropertyAccess for Vertex {
         }
     }
 
-    // Reached for the types not handled above: only an integer `x`, `y` or `z` is refused
+    // Reached for the types not handled above: an integer normal or texture coordinate is
+    // taken as its value; an integer position, or a list where a number belongs, is refused
     // (the header check rejects those first, with a clearer message).
-    fn set_property(&mut self, name: &str, _: Property) -> PropertyAccessResult {
-        match axis(name) {
+    fn set_property(&mut self, name: &str, property: Property) -> PropertyAccessResult {
+        let value = match property {
+            Property::Char(v) => f64::from(v),
+            Property::UChar(v) => f64::from(v),
+            Property::Short(v) => f64::from(v),
+            Property::UShort(v) => f64::from(v),
+            Property::Int(v) => f64::from(v),
+            Property::UInt(v) => f64::from(v),
+            _ => f64::NAN,
+        };
+        match slot(name) {
+            Some(i) if i >= 3 && !value.is_nan() => {
+                self.0[i] = value;
+                PropertyAccessResult::Set
+            }
             Some(_) => PropertyAccessResult::UnsupportedType,
             None => PropertyAccessResult::Ignored,
         }
     }
 }
 
-/// The coordinate a property name sets, if any.
-fn axis(name: &str) -> Option<usize> {
-    ["x", "y", "z"].iter().position(|&a| a == name)
+/// Where in a [`Vertex`] a property name goes, if it is read: `x y z` to 0–2, `nx ny nz`
+/// to 3–5, a texture coordinate's first name to 6 and its second to 7.
+fn slot(name: &str) -> Option<usize> {
+    let i = VERTEX_NAMES.iter().position(|&a| a == name)?;
+    Some(if i < 6 { i } else { 6 + (i - 6) % 2 })
 }
 
 /// A face's vertex indices, widened to `i64` so that any PLY integer type fits.
@@ -128,16 +167,36 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
     }
 
     let positions: Vec<Vec3<f64>> = vertices
-        .into_iter()
-        .map(|Vertex([x, y, z])| Vec3::new(x, y, z))
+        .iter()
+        .map(|Vertex(v)| Vec3::new(v[0], v[1], v[2]))
         .collect();
+    let vertex = &header.elements["vertex"];
+    let has = |name: &str| vertex.properties.contains_key(name);
+    let normals = ["nx", "ny", "nz"].iter().all(|n| has(n)).then(|| {
+        vertices
+            .iter()
+            .map(|Vertex(v)| Vec3::new(v[3], v[4], v[5]))
+            .collect::<Vec<_>>()
+    });
+    let uv_names = UV_NAMES.into_iter().find(|pair| pair.iter().all(|n| has(n)));
+    let uvs = uv_names.map(|_| vertices.iter().map(|Vertex(v)| [v[6], v[7]]).collect::<Vec<_>>());
+    drop(vertices);
     let named = |problem: Problem| fail(problem.to_string());
     check_positions(&positions).map_err(named)?;
+    check_attributes(
+        normals.as_deref(),
+        uvs.as_deref(),
+        (["nx", "ny", "nz"], uv_names.unwrap_or(["u", "v"])),
+    )
+    .map_err(named)?;
     let mut mesh = Triangulator::new(positions);
     for (number, Face(indices)) in faces.into_iter().enumerate() {
         mesh.add_face(number, indices.into_iter()).map_err(named)?;
     }
-    mesh.finish().map_err(named)
+    let mut mesh = mesh.finish().map_err(named)?;
+    mesh.normals = normals;
+    mesh.uvs = uvs;
+    Ok(mesh)
 }
 
 /// Why the header could not be read, in words about the file that quote none of it (the
@@ -224,6 +283,12 @@ fn check_header(header: &Header) -> std::result::Result<(), String> {
                 ));
             }
             None => return Err(format!("element vertex: no property {name}")),
+        }
+    }
+    // A normal's or a texture coordinate's component may be of any number type.
+    for name in &VERTEX_NAMES[3..] {
+        if let Some(PropertyType::List(..)) = vertex.properties.get(*name).map(|p| &p.data_type) {
+            return Err(format!("element vertex: property {name} is a list, not a number"));
         }
     }
     let face = element("face")?;

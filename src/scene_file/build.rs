@@ -6,12 +6,13 @@ use super::check::{blame, checked, vec};
 use super::location::KeyPath;
 use super::make::{self, Solid};
 use super::model::{BackgroundSpec, CameraSpec, ObjectSpec, Triple};
+use super::resolve::Resolver;
 use super::transform::Placement;
 use crate::aabb::Aabb;
 use crate::background::EnvironmentMap;
 use crate::error::{Error, Field, Result};
 use crate::float::Float;
-use crate::material::MaterialKind;
+use crate::material::{Material, MaterialKind};
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
 use crate::shape::{Hittable, Mesh, ShapeKind};
@@ -90,16 +91,14 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
         BackgroundSpec::Envmap { .. } => true,
     });
 
-    let mut materials = BTreeMap::new();
-    for (name, m) in &file.materials {
-        let at = root.key("materials").key(name);
-        let made = checked::<F, _>(&root, &at, make::material::<f64>(m), make::material::<F>(m))?;
-        materials.insert(name.as_str(), made);
-    }
+    let folder = file.path().parent().unwrap_or(Path::new(""));
+    let mut resolver = Resolver::new(file, folder);
+    resolver.check_textures::<F>()?;
+    let materials = resolver.materials::<F>()?;
     let mut summary = Summary::default();
     for (i, object) in file.objects.iter().enumerate() {
         let at = root.key("objects").index(i);
-        let Some(&m) = materials.get(object.material()) else {
+        let Some(m) = materials.get(object.material()).cloned() else {
             return Err(at
                 .key("material")
                 .error(unknown_material(object.material(), &materials)));
@@ -202,10 +201,17 @@ fn add_object<F: Float>(
             scale,
             rotate,
             translate,
+            face_normals,
+            flip_tex_coords,
             ..
         } => {
             let placement = placement(at, scale.factors(), rotate, translate)?;
-            let shape = mesh::<F>(root, at, &folder.join(file), &placement, summary)?;
+            let path = folder.join(file);
+            let attributes = Attributes {
+                normals: !face_normals,
+                flip_v: flip_tex_coords.unwrap_or_else(|| crate::mesh::flips_tex_coords(&path)),
+            };
+            let shape = mesh::<F>(root, at, &path, &placement, attributes, summary)?;
             scene.add(shape, material);
             return Ok(());
         }
@@ -235,12 +241,24 @@ fn placement(at: &KeyPath, scale: Triple, rotate: Triple, translate: Triple) -> 
     ))
 }
 
-/// The mesh at `path`, placed and rounded to `F`; its skipped faces are counted in `summary`.
+/// Which of a mesh file's vertex attributes a mesh takes, and how.
+#[derive(Clone, Copy, Debug)]
+struct Attributes {
+    /// Whether its normals are kept (not `face_normals`).
+    normals: bool,
+    /// Whether its texture coordinates' `v` is flipped, `v ↦ 1 − v`.
+    flip_v: bool,
+}
+
+/// The mesh at `path`, placed and rounded to `F`, with the file's normals (placed as
+/// normals are) and texture coordinates as `attributes` say; its skipped faces are
+/// counted in `summary`.
 fn mesh<F: Float>(
     root: &KeyPath,
     at: &KeyPath,
     path: &Path,
     placement: &Placement,
+    attributes: Attributes,
     summary: &mut Summary,
 ) -> Result<Mesh<F>> {
     let mesh = crate::mesh::load(path).map_err(|e| at.key("file").wrap(e))?;
@@ -259,7 +277,23 @@ fn mesh<F: Float>(
         vertices.push(v);
     }
     // Placement and rounding can flatten a face: the mesh leaves it out and counts it.
-    let shape = Mesh::new(vertices, mesh.triangles).map_err(|e| blame(root, at, e))?;
+    let mut shape = Mesh::new(vertices, mesh.triangles).map_err(|e| blame(root, at, e))?;
+    if let Some(normals) = mesh.normals.filter(|_| attributes.normals) {
+        // Each normal's direction, rounded to F once it is of unit length (a normal placed
+        // by a tiny scale may not be finite in F before).
+        let placed = normals.into_iter().map(|n| {
+            let n = placement.apply_normal(n);
+            vec::<F>(n.try_normalize().unwrap_or(n).to_f64())
+        });
+        shape = shape
+            .with_normals(placed.collect())
+            .map_err(|e| blame(root, at, e))?;
+    }
+    if let Some(uvs) = mesh.uvs {
+        let flip = |[u, v]: [f64; 2]| [u, if attributes.flip_v { 1.0 - v } else { v }];
+        let uvs = uvs.into_iter().map(|uv| flip(uv).map(F::from_f64)).collect();
+        shape = shape.with_uvs(uvs).map_err(|e| blame(root, at, e))?;
+    }
     summary.skipped_degenerate += shape.skipped_degenerate() + mesh.skipped_degenerate;
     summary.meshes += 1;
     Ok(shape)
@@ -285,7 +319,8 @@ fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
         }
     }
     summary.lights = scene.lights().len();
-    let emits = |m: &MaterialKind<F>| matches!(m, MaterialKind::Emissive(_));
+    // Asked of the material, not its kind: a normal map over an emitter still emits.
+    let emits = |m: &MaterialKind<F>| m.emits().is_some();
     summary.emitters = scene.objects().iter().filter(|o| emits(&o.material)).count();
     summary.sampled_emitters = scene.emitters().len();
     summary.bounds = bounds;

@@ -38,6 +38,10 @@ pub fn key<'a>(root: &KeyPath<'a>, entry: &KeyPath<'a>, field: Field) -> KeyPath
         }
         Field::RefractiveIndex => own("index"),
         Field::EmittedRadiance => own("radiance"),
+        Field::CheckerboardColor0 => own("color0"),
+        Field::CheckerboardColor1 => own("color1"),
+        Field::TextureScale => own("scale"),
+        Field::TextureOffset => own("offset"),
         Field::LightPosition => own("position"),
         Field::LightIntensity => own("intensity"),
         Field::BackgroundColor => own("color"),
@@ -73,6 +77,8 @@ fn blame_with(root: &KeyPath, entry: &KeyPath, e: Error, tail: &str) -> Error {
         Error::InvalidValue { field, reason } => {
             key(root, entry, field).error_about(Some(field), format!("{reason}{tail}"))
         }
+        // Already at its place: a texture or a material the entry names.
+        located @ Error::SceneFile { .. } => located,
         other => entry.error(format!("{other}{tail}")),
     }
 }

@@ -25,6 +25,10 @@ fn material(kind: &str, keys: &str) -> String {
     format!("[materials.x]\ntype = \"{kind}\"\n{keys}\n")
 }
 
+fn texture(kind: &str, keys: &str) -> String {
+    format!("[textures.t]\ntype = \"{kind}\"\n{keys}\n")
+}
+
 fn look_at(keys: &str) -> String {
     let base = [
         ("from", "from = [0, 0, 0]"),
@@ -118,6 +122,26 @@ fn case(field: Field) -> Option<Case> {
             false,
             "materials.x.albedo",
         ),
+        Field::CheckerboardColor0 => (
+            texture("checkerboard", "color0 = [nan, 0, 0]"),
+            false,
+            "textures.t.color0",
+        ),
+        Field::CheckerboardColor1 => (
+            texture("checkerboard", "color1 = [0, 1e39, 0]"),
+            true,
+            "textures.t.color1",
+        ),
+        Field::TextureScale => (
+            texture("checkerboard", "scale = [1, inf]"),
+            false,
+            "textures.t.scale",
+        ),
+        Field::TextureOffset => (
+            texture("checkerboard", "offset = [1e39, 0]"),
+            true,
+            "textures.t.offset",
+        ),
         Field::LightPosition => (
             "[[lights]]\nposition = [1e39, 0, 0]\nintensity = [1, 1, 1]\n".into(),
             true,
@@ -199,7 +223,7 @@ fn small_map() -> &'static Path {
 /// Every field but those no scene file can get wrong (a user's own, a rotation matrix). A
 /// field added to [`Field`] needs a case in the `match` above to compile, and belongs here
 /// too.
-const FIELDS: [Field; 32] = [
+const FIELDS: [Field; 36] = [
     Field::SphereCenter,
     Field::SphereRadius,
     Field::PlanePoint,
@@ -215,6 +239,10 @@ const FIELDS: [Field; 32] = [
     Field::DielectricAlbedo,
     Field::EmittedRadiance,
     Field::EmissiveAlbedo,
+    Field::CheckerboardColor0,
+    Field::CheckerboardColor1,
+    Field::TextureScale,
+    Field::TextureOffset,
     Field::LightPosition,
     Field::LightIntensity,
     Field::BackgroundColor,

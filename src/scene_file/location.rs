@@ -165,7 +165,7 @@ fn error_at(file: &Path, text: &str, span: Option<Range<usize>>, message: &str, 
 /// Rust types (`expected internally tagged enum MaterialSpec`, `expected u32`), and the
 /// value it quotes as short as the file would write it.
 fn plain(message: &str) -> String {
-    const WORDS: [(&str, &str); 10] = [
+    const WORDS: [(&str, &str); 11] = [
         ("internally tagged enum CameraSpec", "a table with a `type` key"),
         (
             "internally tagged enum BackgroundSpec",
@@ -173,6 +173,7 @@ fn plain(message: &str) -> String {
         ),
         ("internally tagged enum MaterialSpec", "a table with a `type` key"),
         ("internally tagged enum ObjectSpec", "a table with a `type` key"),
+        ("internally tagged enum TextureSpec", "a table with a `type` key"),
         ("expected struct RenderOptions", "expected a table"),
         ("expected struct LightSpec", "expected a table"),
         ("expected variant identifier", "expected a string naming the type"),

@@ -5,13 +5,14 @@
 use super::camera::FileCamera;
 use super::check::vec;
 use super::model::{BackgroundSpec, FresnelSpec, LightSpec, MaterialSpec};
+use super::resolve::{Inputs, TextureUse};
 use super::transform::Placement;
 use crate::background::{Background, EnvironmentMap};
 use crate::camera::{LookAtCamera, ScreenCamera};
 use crate::error::Result;
 use crate::float::{Float, lit};
 use crate::light::PointLight;
-use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, Reflectance};
+use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, NormalMap, Reflectance};
 use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
 use crate::vec3::Vec3;
 use std::sync::Arc;
@@ -36,11 +37,13 @@ pub fn shape<G: Float>(solid: Solid) -> Result<ShapeKind<G>> {
     })
 }
 
-/// The material in `G`.
-pub fn material<G: Float>(spec: &MaterialSpec) -> Result<MaterialKind<G>> {
+/// The material in `G`, with the textures and materials its keys name from `inputs`.
+pub fn material<G: Float>(spec: &MaterialSpec, inputs: &mut dyn Inputs<G>) -> Result<MaterialKind<G>> {
     Ok(match *spec {
         MaterialSpec::Mirror { albedo } => Mirror::new(vec(albedo))?.into(),
-        MaterialSpec::Lambertian { albedo } => Lambertian::new(vec(albedo))?.into(),
+        MaterialSpec::Lambertian { ref albedo } => {
+            Lambertian::textured(inputs.texture("albedo", albedo, TextureUse::Color)?)?.into()
+        }
         MaterialSpec::Dielectric {
             index,
             albedo,
@@ -68,6 +71,14 @@ pub fn material<G: Float>(spec: &MaterialSpec) -> Result<MaterialKind<G>> {
             }
             light.into()
         }
+        MaterialSpec::NormalMap {
+            ref normal_map,
+            ref material,
+        } => NormalMap::new(
+            inputs.texture("normal_map", normal_map, TextureUse::NormalMap)?,
+            inputs.material("material", material)?,
+        )
+        .into(),
     })
 }
 

@@ -3,6 +3,7 @@
 //! Only the shape and the types of values are checked here; their domains (a radius > 0,
 //! an albedo in `[0, 1]`, a material that exists) are checked when the scene is built.
 
+use super::texture_spec::TextureRef;
 use crate::scene::Acceleration;
 use serde::{Deserialize, Serialize};
 
@@ -190,9 +191,8 @@ pub enum MaterialSpec {
     },
     /// A matte surface.
     Lambertian {
-        /// Each channel in `[0, 1]`.
-        #[serde(deserialize_with = "super::triple::deserialize")]
-        albedo: Triple,
+        /// Each channel in `[0, 1]`: a colour, or a texture (by name or in place).
+        albedo: TextureRef,
     },
     /// Glass-like: reflects or refracts.
     Dielectric {
@@ -225,6 +225,27 @@ pub enum MaterialSpec {
         )]
         albedo: Option<Triple>,
     },
+    /// Another material, shaded with normals from a tangent-space normal map (Mitsuba's
+    /// `normalmap`).
+    NormalMap {
+        /// The map: an RGB texture (by name or in place), `n = 2·rgb − 1` in the shading
+        /// frame; an image in it is read as data (`raw = true`) unless it says otherwise.
+        normal_map: TextureRef,
+        /// The name of the material it perturbs, a `[materials]` entry.
+        material: String,
+    },
+}
+
+impl MaterialSpec {
+    /// The textures its keys hold (a colour counts as a constant texture), each with its
+    /// key: the `match` names every kind, so a kind added with a texture key must say so.
+    pub fn textures(&self) -> Vec<(&'static str, &TextureRef)> {
+        match self {
+            Self::Lambertian { albedo } => vec![("albedo", albedo)],
+            Self::NormalMap { normal_map, .. } => vec![("normal_map", normal_map)],
+            Self::Mirror { .. } | Self::Dielectric { .. } | Self::Emissive { .. } => Vec::new(),
+        }
+    }
 }
 
 /// How a dielectric computes its reflectance.
@@ -292,6 +313,14 @@ pub enum ObjectSpec {
         translate: Triple,
         /// The material's name.
         material: String,
+        /// Whether the file's vertex normals are dropped, so the mesh shades with its
+        /// faces' normals (Mitsuba's `face_normals`; default `false`).
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        face_normals: bool,
+        /// Whether the texture coordinates' `v` is flipped, `v ↦ 1 − v` (Mitsuba's
+        /// `flip_tex_coords`); unset, Mitsuba's default: `true` for OBJ, `false` for PLY.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        flip_tex_coords: Option<bool>,
     },
 }
 

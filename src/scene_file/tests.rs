@@ -116,7 +116,39 @@ fn everything_round_trips_through_toml() {
         rotate: [0.0, 90.0, 0.0],
         translate: [0.1, 0.2, 0.3],
         material: "glass with spaces".into(),
+        face_normals: true,
+        flip_tex_coords: Some(false),
     });
+    f.textures.insert(
+        "wood".into(),
+        TextureSpec::Image {
+            file: "wood.png".into(),
+            wrap: WrapSpec::Clamp,
+            raw: Some(true),
+            scale: UvScale::PerAxis([2.0, 3.0]),
+            offset: [0.25, -0.5],
+        },
+    );
+    let checks = TextureSpec::Checkerboard {
+        color0: [0.1, 0.2, 0.3],
+        color1: [0.9, 0.8, 0.7],
+        scale: UvScale::Uniform(8.0),
+        offset: [0.0, 0.5],
+    };
+    for (name, albedo) in [
+        ("named", TextureRef::Named("wood".into())),
+        ("inline", TextureRef::Inline(Box::new(checks))),
+    ] {
+        f.materials
+            .insert(name.into(), MaterialSpec::Lambertian { albedo });
+    }
+    f.materials.insert(
+        "bumpy".into(),
+        MaterialSpec::NormalMap {
+            normal_map: TextureRef::Color([0.5, 0.5, 1.0]),
+            material: "named".into(),
+        },
+    );
     f.lights.push(LightSpec {
         position: [1.0, 2.0, 3.0],
         intensity: [4.0, 5.0, 6.0],

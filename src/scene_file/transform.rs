@@ -26,15 +26,30 @@ impl Placement {
     /// Where the vertex `p` of the mesh file lands in the scene.
     pub fn apply(&self, p: Vec3<f64>) -> Vec3<f64> {
         let [sx, sy, sz] = self.scale;
-        let (x, y, z) = (p.x * sx, p.y * sy, p.z * sz);
+        let [tx, ty, tz] = self.translate;
+        let r = self.rotate(Vec3::new(p.x * sx, p.y * sy, p.z * sz));
+        Vec3::new(r.x + tx, r.y + ty, r.z + tz)
+    }
+
+    /// The direction a normal `n` of the mesh file takes in the scene (not of unit length):
+    /// the inverse transpose of the linear part `R·S`, which is `R·S⁻¹` (`R` a rotation,
+    /// `S` diagonal), so that it stays perpendicular to the placed surface under a
+    /// non-uniform scale. A zero normal stays zero.
+    pub fn apply_normal(&self, n: Vec3<f64>) -> Vec3<f64> {
+        let [sx, sy, sz] = self.scale;
+        self.rotate(Vec3::new(n.x / sx, n.y / sy, n.z / sz))
+    }
+
+    /// `Rz·Ry·Rx·v`.
+    fn rotate(&self, v: Vec3<f64>) -> Vec3<f64> {
+        let (x, y, z) = (v.x, v.y, v.z);
         let [(s, c), _, _] = self.turns;
         let (y, z) = (y * c - z * s, y * s + z * c);
         let [_, (s, c), _] = self.turns;
         let (z, x) = (z * c - x * s, z * s + x * c);
         let [_, _, (s, c)] = self.turns;
         let (x, y) = (x * c - y * s, x * s + y * c);
-        let [tx, ty, tz] = self.translate;
-        Vec3::new(x + tx, y + ty, z + tz)
+        Vec3::new(x, y, z)
     }
 }
 
@@ -82,6 +97,22 @@ mod tests {
         assert!(!close(zx, xz));
         let both = Placement::new([1.0; 3], [90.0, 0.0, 90.0], [0.0; 3]);
         assert!(close(both.apply(Vec3::new(0.0, 1.0, 0.0)), xz));
+    }
+
+    #[test]
+    fn normals_stay_perpendicular_under_a_non_uniform_scale() {
+        // The plane x + y = 1 (normal (1, 1, 0)), stretched along x by 3 and turned.
+        let p = Placement::new([3.0, 1.0, 0.5], [10.0, 20.0, 30.0], [1.0, 2.0, 3.0]);
+        let (a, b) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0));
+        let c = Vec3::new(0.3, 0.7, 2.0);
+        let n = p.apply_normal(Vec3::new(1.0, 1.0, 0.0));
+        for edge in [p.apply(b) - p.apply(a), p.apply(c) - p.apply(a)] {
+            assert!(n.dot(edge).abs() < 1e-12, "{}", n.dot(edge));
+        }
+        // The plain linear map would not be: (3, 1, 0) is not perpendicular to the stretched edge.
+        let wrong = p.apply(Vec3::new(1.0, 1.0, 0.0)) - p.apply(Vec3::zero());
+        assert!(wrong.dot(p.apply(b) - p.apply(a)).abs() > 1.0);
+        assert_eq!(p.apply_normal(Vec3::zero()), Vec3::zero());
     }
 
     #[test]

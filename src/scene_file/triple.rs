@@ -16,7 +16,8 @@ pub fn some<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Triple>, D::Error>
     deserialize(d).map(Some)
 }
 
-struct Exact;
+/// The visitor of [`deserialize`], for a value that may be three numbers among other forms.
+pub(super) struct Exact;
 
 impl<'de> Visitor<'de> for Exact {
     type Value = Triple;

@@ -122,23 +122,27 @@ impl<F: Float> Mesh<F> {
         })
     }
 
-    /// The same mesh with a normal per vertex (any non-zero length; each is normalised),
-    /// which its hits interpolate into the shading normal.
+    /// The same mesh with a normal per vertex, which its hits interpolate into the shading
+    /// normal: each of any length, normalised; a zero normal (a file's vertex without one)
+    /// is kept as zero and adds nothing to the interpolation, and where a triangle's
+    /// corners' normals cancel its hits shade with the face's normal.
     ///
     /// # Errors
     /// [`Error::InvalidValue`] (`what = "mesh normals"`) for a count other than the
-    /// vertices' or a normal that is not finite or is zero.
+    /// vertices' or a normal that is not finite.
     pub fn with_normals(self, normals: Vec<Vec3<F>>) -> Result<Self> {
         self.check_count("mesh normals", normals.len())?;
         let normals = normals
             .into_iter()
             .enumerate()
-            .map(|(k, n)| match n.try_normalize() {
-                Some(unit) if n.is_finite() => Ok(unit),
-                _ => Err(Error::invalid(
-                    "mesh normals",
-                    format!("the normal of vertex {k} is not a finite non-zero vector"),
-                )),
+            .map(|(k, n)| {
+                if !n.is_finite() {
+                    return Err(Error::invalid(
+                        "mesh normals",
+                        format!("the normal of vertex {k} is not finite"),
+                    ));
+                }
+                Ok(n.try_normalize().unwrap_or(Vec3::zero()))
             })
             .collect::<Result<Vec<_>>>()?;
         Ok(Self {

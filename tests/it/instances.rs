@@ -57,7 +57,7 @@ fn scenes<F: Float>(acceleration: Acceleration) -> (EnumScene<F>, EnumScene<F>) 
         };
         instanced.add(
             Instance::new(Arc::clone(&prototype), placement).unwrap(),
-            material,
+            material.clone(),
         );
         let placed = vertices
             .iter()
@@ -138,8 +138,8 @@ fn instances_are_hit_where_their_copies_are() {
         let Some(ray) = Ray::towards(from, to) else {
             continue;
         };
-        let a = instanced.hit(&ray, f32::INFINITY).map(|(h, m)| (h, *m));
-        let b = copied.hit(&ray, f32::INFINITY).map(|(h, m)| (h, *m));
+        let a = instanced.hit(&ray, f32::INFINITY).map(|(h, m)| (h, m.clone()));
+        let b = copied.hit(&ray, f32::INFINITY).map(|(h, m)| (h, m.clone()));
         assert_eq!(a, b, "{ray:?}");
         hits += usize::from(a.is_some_and(|(h, _)| h.point.y > -0.79));
         for t_max in [1.0, 3.0, 5.0] {
@@ -162,10 +162,10 @@ fn instances_are_hit_where_their_copies_are() {
                 let Some(ray) = Ray::towards(from, Vec3::new(x as f32, y as f32, z as f32)) else {
                     continue;
                 };
-                let a = instanced.hit(&ray, f32::INFINITY).map(|(h, m)| (h, *m));
+                let a = instanced.hit(&ray, f32::INFINITY).map(|(h, m)| (h, m.clone()));
                 assert_eq!(
                     a,
-                    copied.hit(&ray, f32::INFINITY).map(|(h, m)| (h, *m)),
+                    copied.hit(&ray, f32::INFINITY).map(|(h, m)| (h, m.clone())),
                     "{ray:?}"
                 );
                 at_vertices += usize::from(a.is_some());

@@ -17,7 +17,7 @@ use raytrace::{BsdfSample, Emission, Eval, Image, Lobes, Scatter};
 
 /// A matte surface seen only by the lights: the renderer adds `A/π · I · cos θ / d²` for each
 /// visible light and, as `sample` absorbs the ray, nothing else.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 struct DirectOnly<F>(Lambertian<F>);
 
 impl<F: Float> Material<F> for DirectOnly<F> {

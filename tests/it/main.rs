@@ -13,6 +13,7 @@ mod options;
 mod parts;
 #[path = "../../examples/scenes/mod.rs"]
 mod scenes;
+mod textured_scene;
 
 mod adversarial_files;
 mod adversarial_scenes;
@@ -35,6 +36,7 @@ mod interrupt;
 mod intersections;
 mod lambertian_chi2;
 mod lights;
+mod mesh_attributes;
 mod meshes;
 mod mis_unbiased;
 mod outputs;
@@ -47,7 +49,9 @@ mod scene_file_errors;
 mod scene_files;
 mod self_intersection;
 mod sphere_stability;
+mod textures;
 mod tiles;
 mod triangle_light_chi2;
+mod uv_conventions;
 mod value_stability;
 mod watertight;

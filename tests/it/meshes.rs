@@ -151,6 +151,8 @@ fn ascii_and_binary_ply_give_the_same_mesh() {
             .collect(),
         triangles: vec![[0, 1, 2], [0, 2, 3], [0, 1, 4]],
         skipped_degenerate: 0,
+        normals: None,
+        uvs: None,
     };
     assert_eq!(ascii, expected);
     assert_eq!(little, expected);

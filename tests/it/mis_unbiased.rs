@@ -112,7 +112,7 @@ fn brighter(scene: &EnumScene<f64>, factor: f64) -> EnumScene<f64> {
     let mut out = EnumScene::new(scene.background().clone());
     out.set_acceleration(scene.acceleration());
     for o in scene.objects() {
-        let material = match o.material {
+        let material = match &o.material {
             MaterialKind::Emissive(e) => {
                 let emission = e.emission();
                 let light = Emissive::new(emission.radiance() * factor).unwrap();
@@ -122,7 +122,7 @@ fn brighter(scene: &EnumScene<f64>, factor: f64) -> EnumScene<f64> {
                     .unwrap()
                     .into()
             }
-            m => m,
+            m => m.clone(),
         };
         out.add(o.shape.clone(), material);
     }
@@ -211,7 +211,7 @@ fn mis_and_scattered_rays_agree_with_an_environment_light() {
         let mut scene = EnumScene::new(sky(sun));
         scene.set_background_sampled(true);
         for o in base.objects() {
-            scene.add(o.shape.clone(), o.material);
+            scene.add(o.shape.clone(), o.material.clone());
         }
         for &l in base.lights() {
             scene.add_light(l);

@@ -10,6 +10,7 @@
 use crate::mesh_scene;
 use crate::parts;
 use crate::scenes;
+use crate::textured_scene;
 
 use raytrace::prelude::*;
 use raytrace::{DefaultRng, Image};
@@ -263,4 +264,21 @@ fn the_comparison_sees_light_found_another_way() {
         .render()
         .unwrap();
     assert!(first_difference(&bsdf.image, &mis.image).is_some());
+}
+
+/// The textured scene (every texture kind, a normal map, a mesh with texture coordinates and
+/// vertex normals): the fast renderer gives the reference's bytes on both dispatch paths.
+fn textured<F: Float>() {
+    let scene = textured_scene::textured::<F>();
+    let camera = ScreenCamera::new(36, 18).unwrap();
+    for spp in [1, 3] {
+        check("textured", &scene, &camera, spp);
+        check("textured (dyn)", &scene.to_dyn(), &camera, spp);
+    }
+}
+
+#[test]
+fn the_textured_scene_renders_as_the_reference() {
+    textured::<f32>();
+    textured::<f64>();
 }

@@ -174,7 +174,9 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
     ];
     let material = prop_oneof![
         triple(0.0..1.0).prop_map(|albedo| MaterialSpec::Mirror { albedo }),
-        triple(0.0..1.0).prop_map(|albedo| MaterialSpec::Lambertian { albedo }),
+        triple(0.0..1.0).prop_map(|albedo| MaterialSpec::Lambertian {
+            albedo: albedo.into()
+        }),
         (finite(), proptest::option::of(triple(0.0..1.0)), any::<bool>()).prop_map(
             |(index, albedo, exact)| {
                 MaterialSpec::Dielectric {
@@ -222,7 +224,9 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
                 scale,
                 rotate,
                 translate,
-                material
+                material,
+                face_normals: false,
+                flip_tex_coords: None,
             }),
     ];
     let light = (triple(-9.0..9.0), triple(0.0..50.0))

@@ -24,35 +24,35 @@ impl Write for Fnv {
 }
 
 /// The hash a tile carries of everything its image depends on: FNV-1a 64 of the scene as
-/// rendered (the file after the command line's overrides, as TOML), then of each mesh file
-/// it names, its path and its bytes. Tiles rendered from different scene files, settings
-/// or mesh contents differ in it.
+/// rendered (the file after the command line's overrides, as TOML), then of each mesh and
+/// texture image file it names, its path and its bytes. Tiles rendered from different
+/// scene files, settings, mesh or image contents differ in it.
 ///
 /// A file is read only up to the length the system gives it (a device or a pipe named
 /// as a mesh adds nothing here; loading it is the build's concern).
 ///
 /// # Errors
-/// [`Error::Io`] naming a mesh file that cannot be read.
+/// [`Error::Io`] naming a mesh or image file that cannot be read.
 pub fn scene_hash(file: &SceneFile) -> Result<String> {
     let mut hash = Fnv(0xcbf2_9ce4_8422_2325);
     // Writing into the hash never fails.
     let _ = hash.write_all(file.to_toml().as_bytes());
-    for mesh in file.input_files() {
+    for input in file.input_files() {
         let io_err = |source| Error::Io {
-            path: mesh.clone(),
+            path: input.clone(),
             source,
         };
         // Each name ends in a 0 byte, which no path holds: names and contents cannot shift.
-        let _ = hash.write_all(mesh.to_string_lossy().as_bytes());
+        let _ = hash.write_all(input.to_string_lossy().as_bytes());
         let _ = hash.write_all(&[0]);
-        let f = File::open(&mesh).map_err(io_err)?;
+        let f = File::open(&input).map_err(io_err)?;
         let len = f.metadata().map_err(io_err)?.len();
         io::copy(&mut f.take(len), &mut hash).map_err(io_err)?;
     }
     Ok(format!("{:016x}", hash.0))
 }
 
-/// The files `raytrace render` reads: the scene file and every mesh it names.
+/// The files `raytrace render` reads: the scene file and every mesh and image it names.
 pub fn of_scene(file: &SceneFile) -> Vec<PathBuf> {
     std::iter::once(file.path().to_path_buf())
         .chain(file.input_files())
