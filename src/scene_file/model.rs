@@ -138,7 +138,7 @@ pub enum BackgroundSpec {
         #[serde(default, skip_serializing_if = "is_false")]
         light: bool,
     },
-    /// An HDR environment map (OpenEXR), in Mitsuba 3's `envmap` conventions: always a
+    /// An HDR environment map (OpenEXR or Radiance HDR), in Mitsuba 3's `envmap` conventions: always a
     /// light.
     Envmap {
         /// The image, relative to the scene file's folder.

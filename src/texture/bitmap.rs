@@ -128,6 +128,11 @@ impl Bitmap {
         &self.pixels
     }
 
+    /// The pixels, row by row from the top, taken out of the bitmap.
+    pub fn into_pixels(self) -> Vec<[f32; 3]> {
+        self.pixels
+    }
+
     /// Whether every pixel's three channels are equal (an image of one channel).
     pub fn is_grey(&self) -> bool {
         self.grey

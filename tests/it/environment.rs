@@ -271,3 +271,50 @@ fn a_background_becomes_a_light_only_when_asked() {
     assert!(sampled.stats.rays > plain.stats.rays, "the background is sampled");
     let _: &Image = &sampled.image;
 }
+
+/// A map read from a file: the same texels as a Radiance HDR file (values its shared
+/// exponent holds exactly) and as an OpenEXR file give the same map, scaled; a file that
+/// is missing, not an image or not 2:1 is an error naming it at the map's field.
+#[test]
+fn a_map_reads_from_radiance_hdr_and_openexr_alike() {
+    use image::{ImageBuffer, ImageFormat, Rgb};
+    use raytrace::error::{Error, Field};
+    let dir = std::env::temp_dir().join(format!("rt-envmap-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let texels = [
+        [0.5f32, 1.0, 0.25],
+        [2.0, 4.0, 1.0],
+        [0.0, 0.0, 0.0],
+        [8.0, 0.5, 2.0],
+    ];
+    let hdr = dir.join("map.hdr");
+    ImageBuffer::<Rgb<f32>, Vec<f32>>::from_raw(2, 1, texels[..2].iter().flatten().copied().collect())
+        .unwrap()
+        .save_with_format(&hdr, ImageFormat::Hdr)
+        .unwrap();
+    let exr = dir.join("map.exr");
+    let pixels = texels[..2].iter().map(|t| t.map(f64::from)).collect();
+    raytrace::image::write_exr(&exr, &Image::from_pixels(2, 1, pixels).unwrap()).unwrap();
+    let want = EnvironmentMap::new(2, 1, texels[..2].to_vec(), 3.0).unwrap();
+    for file in [&hdr, &exr] {
+        let got = EnvironmentMap::load(file, 3.0).unwrap();
+        for uv in [[0.25, 0.5], [0.75, 0.5], [0.1, 0.9], [0.6, 0.2]] {
+            assert_eq!(got.radiance_at(uv), want.radiance_at(uv), "{}", file.display());
+        }
+    }
+    let square = dir.join("square.exr");
+    let pixels = texels.iter().map(|t| t.map(f64::from)).collect();
+    raytrace::image::write_exr(&square, &Image::from_pixels(2, 2, pixels).unwrap()).unwrap();
+    let not_an_image = dir.join("notes.hdr");
+    std::fs::write(&not_an_image, "not an image").unwrap();
+    for bad in [dir.join("missing.exr"), not_an_image, square] {
+        match EnvironmentMap::load(&bad, 1.0) {
+            Err(Error::InvalidValue {
+                field: Field::EnvironmentMap,
+                reason,
+            }) => assert!(reason.contains(&bad.display().to_string()), "{reason}"),
+            other => panic!("{}: {other:?}", bad.display()),
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
