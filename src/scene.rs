@@ -92,11 +92,18 @@ impl<F: Float> EnumScene<F> {
                 ShapeKind::Triangle(t) => Box::new(*t),
                 ShapeKind::Mesh(m) => Box::new(Arc::clone(m)),
             };
-            let material: SharedMaterial<F> = match o.material {
-                MaterialKind::Mirror(m) => Arc::new(m).into(),
-                MaterialKind::Lambertian(m) => Arc::new(m).into(),
-                MaterialKind::Dielectric(m) => Arc::new(m).into(),
-                MaterialKind::Emissive(m) => Arc::new(m).into(),
+            let material: SharedMaterial<F> = match &o.material {
+                MaterialKind::Mirror(m) => Arc::new(*m).into(),
+                MaterialKind::Lambertian(m) => Arc::new(*m).into(),
+                MaterialKind::Dielectric(m) => Arc::new(*m).into(),
+                MaterialKind::Emissive(m) => Arc::new(*m).into(),
+                MaterialKind::Conductor(m) => Arc::clone(m).into(),
+                MaterialKind::RoughConductor(m) => Arc::clone(m).into(),
+                MaterialKind::RoughDielectric(m) => Arc::clone(m).into(),
+                MaterialKind::ThinDielectric(m) => Arc::clone(m).into(),
+                MaterialKind::Plastic(m) => Arc::clone(m).into(),
+                MaterialKind::RoughPlastic(m) => Arc::clone(m).into(),
+                MaterialKind::TwoSided(m) => Arc::clone(m).into(),
             };
             scene.add(shape, material);
         }

@@ -31,17 +31,23 @@
 //! # Ok::<(), raytrace::Error>(())
 //! ```
 
+mod bsdf;
 mod build;
 mod camera;
 mod check;
 mod integer;
 mod location;
 mod make;
+mod make_bsdf;
 mod model;
 mod transform;
 mod triple;
 mod warnings;
 
+pub use bsdf::{
+    ConductorSpec, DistributionSpec, IorSpec, PlasticSpec, RoughConductorSpec, RoughDielectricSpec,
+    RoughPlasticSpec, RoughnessSpec, ThinDielectricSpec, TwoSidedSpec,
+};
 pub use build::{Built, Summary};
 pub use camera::FileCamera;
 pub use model::{

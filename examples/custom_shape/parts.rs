@@ -244,7 +244,7 @@ impl<F> From<Disk<F>> for Shape<F> {
 }
 
 /// Every material of the enum path: the library's and the user's.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum UserMaterial<F> {
     /// A mirror, matte, glass or emissive surface.
     Library(MaterialKind<F>),

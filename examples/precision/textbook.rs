@@ -138,7 +138,7 @@ pub fn to_textbook<F: Float>(scene: &EnumScene<F>) -> StudyScene<F> {
             ShapeKind::Sphere(s) => StudyShape::Textbook(TextbookSphere(*s)),
             other => StudyShape::Kind(other.clone()),
         };
-        out.add(shape, o.material);
+        out.add(shape, o.material.clone());
     }
     for l in scene.lights() {
         out.add_light(*l);

@@ -1,13 +1,21 @@
 //! [`MaterialKind`]: the enum fast path over the concrete materials.
 
-use super::{BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror, Scatter};
+use super::{
+    BsdfSample, Conductor, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror,
+    Plastic, RoughConductor, RoughDielectric, RoughPlastic, Scatter, ThinDielectric, TwoSided,
+};
 use crate::float::Float;
 use crate::shape::Hit;
 use crate::vec3::Vec3;
 use rand::Rng;
+use std::sync::Arc;
 
 /// The enum fast path: every concrete material, dispatched by `match`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// The specification's materials are stored inline; the others, larger (textures, tables),
+/// behind an `Arc`, shared by every object that uses them, so a scene of the spec's
+/// materials keeps its small objects (and the enum is `Clone`, not `Copy`).
+#[derive(Clone, Debug, PartialEq)]
 pub enum MaterialKind<F> {
     /// A [`Mirror`].
     Mirror(Mirror<F>),
@@ -17,6 +25,20 @@ pub enum MaterialKind<F> {
     Dielectric(Dielectric<F>),
     /// A light-giving [`Emissive`] surface.
     Emissive(Emissive<F>),
+    /// A smooth [`Conductor`] (a polished metal).
+    Conductor(Arc<Conductor<F>>),
+    /// A [`RoughConductor`] (a brushed metal).
+    RoughConductor(Arc<RoughConductor<F>>),
+    /// A [`RoughDielectric`] (frosted glass).
+    RoughDielectric(Arc<RoughDielectric<F>>),
+    /// A [`ThinDielectric`] sheet (a window pane).
+    ThinDielectric(Arc<ThinDielectric<F>>),
+    /// A smooth [`Plastic`].
+    Plastic(Arc<Plastic<F>>),
+    /// A [`RoughPlastic`].
+    RoughPlastic(Arc<RoughPlastic<F>>),
+    /// A [`TwoSided`] wrapper.
+    TwoSided(Arc<TwoSided<F>>),
 }
 
 /// `match` on a [`MaterialKind`], the same call on every variant: no arm can be left out.
@@ -27,6 +49,13 @@ macro_rules! each_material {
             MaterialKind::Lambertian($m) => $call,
             MaterialKind::Dielectric($m) => $call,
             MaterialKind::Emissive($m) => $call,
+            MaterialKind::Conductor($m) => $call,
+            MaterialKind::RoughConductor($m) => $call,
+            MaterialKind::RoughDielectric($m) => $call,
+            MaterialKind::ThinDielectric($m) => $call,
+            MaterialKind::Plastic($m) => $call,
+            MaterialKind::RoughPlastic($m) => $call,
+            MaterialKind::TwoSided($m) => $call,
         }
     };
 }
@@ -87,6 +116,32 @@ impl<F> From<Emissive<F>> for MaterialKind<F> {
     }
 }
 
+/// `From` a material stored behind an `Arc`: the material itself or its `Arc`.
+macro_rules! from_shared {
+    ($($t:ident),*) => {$(
+        impl<F> From<$t<F>> for MaterialKind<F> {
+            fn from(m: $t<F>) -> Self {
+                Self::$t(Arc::new(m))
+            }
+        }
+
+        impl<F> From<Arc<$t<F>>> for MaterialKind<F> {
+            fn from(m: Arc<$t<F>>) -> Self {
+                Self::$t(m)
+            }
+        }
+    )*};
+}
+from_shared!(
+    Conductor,
+    RoughConductor,
+    RoughDielectric,
+    ThinDielectric,
+    Plastic,
+    RoughPlastic,
+    TwoSided
+);
+
 impl<F: Float> MaterialKind<F> {
     /// This material in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
     pub fn cast<G: Float>(&self) -> crate::error::Result<MaterialKind<G>> {
@@ -100,6 +155,13 @@ impl<F: Float> MaterialKind<F> {
                 .with_reflectance(m.reflectance())
                 .into(),
             Self::Emissive(m) => m.cast()?.into(),
+            Self::Conductor(m) => m.cast()?.into(),
+            Self::RoughConductor(m) => m.cast()?.into(),
+            Self::RoughDielectric(m) => m.cast()?.into(),
+            Self::ThinDielectric(m) => m.cast()?.into(),
+            Self::Plastic(m) => m.cast()?.into(),
+            Self::RoughPlastic(m) => m.cast()?.into(),
+            Self::TwoSided(m) => m.cast()?.into(),
         })
     }
 }

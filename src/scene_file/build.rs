@@ -5,7 +5,8 @@ use super::camera::FileCamera;
 use super::check::{blame, checked, vec};
 use super::location::KeyPath;
 use super::make::{self, Solid};
-use super::model::{CameraSpec, ObjectSpec, Triple};
+use super::make_bsdf;
+use super::model::{CameraSpec, MaterialSpec, ObjectSpec, Triple};
 use super::transform::Placement;
 use crate::aabb::Aabb;
 use crate::error::{Error, Field, Result};
@@ -77,14 +78,13 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
     let mut materials = BTreeMap::new();
     for (name, m) in &file.materials {
         let at = root.key("materials").key(name);
-        let made = checked::<F, _>(&root, &at, make::material::<f64>(m), make::material::<F>(m))?;
-        materials.insert(name.as_str(), made);
+        materials.insert(name.as_str(), material::<F>(&root, &at, m)?);
     }
     let folder = file.path().parent().unwrap_or(Path::new(""));
     let mut summary = Summary::default();
     for (i, object) in file.objects.iter().enumerate() {
         let at = root.key("objects").index(i);
-        let Some(&m) = materials.get(object.material()) else {
+        let Some(m) = materials.get(object.material()).cloned() else {
             return Err(at
                 .key("material")
                 .error(unknown_material(object.material(), &materials)));
@@ -107,6 +107,20 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
         settings,
         summary,
     })
+}
+
+/// The material `spec` at `at`: a two-sided one's materials at the keys `front` and
+/// `back`, so their errors are reported there.
+fn material<F: Float>(root: &KeyPath, at: &KeyPath, spec: &MaterialSpec) -> Result<MaterialKind<F>> {
+    let MaterialSpec::TwoSided(two) = spec else {
+        return checked::<F, _>(root, at, make::material::<f64>(spec), make::material::<F>(spec));
+    };
+    let front = material::<F>(root, &at.key("front"), &two.front)?;
+    let back = match &two.back {
+        Some(b) => Some(material::<F>(root, &at.key("back"), b)?),
+        None => None,
+    };
+    make_bsdf::two_sided(front, back).map_err(|e| blame(root, at, e))
 }
 
 fn unknown_material(name: &str, known: &BTreeMap<&str, MaterialKind<impl Float>>) -> String {

@@ -4,6 +4,7 @@
 
 use super::camera::FileCamera;
 use super::check::vec;
+use super::make_bsdf;
 use super::model::{BackgroundSpec, FresnelSpec, LightSpec, MaterialSpec};
 use crate::background::Background;
 use crate::camera::{LookAtCamera, ScreenCamera};
@@ -33,9 +34,20 @@ pub fn shape<G: Float>(solid: Solid) -> Result<ShapeKind<G>> {
     })
 }
 
-/// The material in `G`.
+/// The material in `G`. (A two-sided one's materials are made here too, but a file's
+/// builder makes them itself, to report their errors at their own keys.)
 pub fn material<G: Float>(spec: &MaterialSpec) -> Result<MaterialKind<G>> {
     Ok(match *spec {
+        MaterialSpec::Conductor(ref c) => make_bsdf::conductor(c)?,
+        MaterialSpec::RoughConductor(ref c) => make_bsdf::rough_conductor(c)?,
+        MaterialSpec::RoughDielectric(ref d) => make_bsdf::rough_dielectric(d)?,
+        MaterialSpec::ThinDielectric(ref d) => make_bsdf::thin_dielectric(d)?,
+        MaterialSpec::Plastic(ref p) => make_bsdf::plastic(p)?,
+        MaterialSpec::RoughPlastic(ref p) => make_bsdf::rough_plastic(p)?,
+        MaterialSpec::TwoSided(ref t) => {
+            let back = t.back.as_deref().map(material).transpose()?;
+            make_bsdf::two_sided(material(&t.front)?, back)?
+        }
         MaterialSpec::Mirror { albedo } => Mirror::new(vec(albedo))?.into(),
         MaterialSpec::Lambertian { albedo } => Lambertian::new(vec(albedo))?.into(),
         MaterialSpec::Dielectric {

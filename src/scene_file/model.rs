@@ -3,6 +3,10 @@
 //! Only the shape and the types of values are checked here; their domains (a radius > 0,
 //! an albedo in `[0, 1]`, a material that exists) are checked when the scene is built.
 
+use super::bsdf::{
+    ConductorSpec, PlasticSpec, RoughConductorSpec, RoughDielectricSpec, RoughPlasticSpec,
+    ThinDielectricSpec, TwoSidedSpec,
+};
 use crate::scene::Acceleration;
 use serde::{Deserialize, Serialize};
 
@@ -197,6 +201,20 @@ pub enum MaterialSpec {
         )]
         albedo: Option<Triple>,
     },
+    /// A smooth conductor (Mitsuba's `conductor`).
+    Conductor(ConductorSpec),
+    /// A rough conductor (Mitsuba's `roughconductor`).
+    RoughConductor(RoughConductorSpec),
+    /// A rough dielectric (Mitsuba's `roughdielectric`).
+    RoughDielectric(RoughDielectricSpec),
+    /// A thin dielectric sheet (Mitsuba's `thindielectric`).
+    ThinDielectric(ThinDielectricSpec),
+    /// A smooth plastic (Mitsuba's `plastic`).
+    Plastic(PlasticSpec),
+    /// A rough plastic (Mitsuba's `roughplastic`).
+    RoughPlastic(RoughPlasticSpec),
+    /// A one-sided material shaded alike from both faces (Mitsuba's `twosided`).
+    TwoSided(TwoSidedSpec),
 }
 
 /// How a dielectric computes its reflectance.

@@ -56,9 +56,9 @@ fn scene<F: Float>(acceleration: Acceleration, triangles: bool) -> EnumScene<F> 
 fn naive_hit<F: Float>(scene: &EnumScene<F>, ray: &Ray<F>) -> Option<(Hit<F>, MaterialKind<F>)> {
     let mut best: Option<(Hit<F>, MaterialKind<F>)> = None;
     for o in scene.objects() {
-        let bound = best.map_or(F::infinity(), |(h, _)| h.t);
+        let bound = best.as_ref().map_or(F::infinity(), |(h, _)| h.t);
         if let Some(hit) = o.shape.hit(ray, bound) {
-            best = Some((hit, o.material));
+            best = Some((hit, o.material.clone()));
         }
     }
     best
@@ -78,8 +78,8 @@ fn same_queries<F: Float>(triangles: bool) {
         let o = Vec3::from_f64(rng.random_range(-3.0..3.0), rng.random_range(-3.0..3.0), 0.0);
         let target = Vec3::from_f64(rng.random_range(-8.0..8.0), rng.random_range(-8.0..8.0), -10.0);
         let ray = Ray::towards(o, target).unwrap();
-        let a = linear.hit(&ray, F::infinity()).map(|(h, m)| (h, *m));
-        let b = bvh.hit(&ray, F::infinity()).map(|(h, m)| (h, *m));
+        let a = linear.hit(&ray, F::infinity()).map(|(h, m)| (h, m.clone()));
+        let b = bvh.hit(&ray, F::infinity()).map(|(h, m)| (h, m.clone()));
         assert_eq!(a, b, "{ray:?}");
         assert_eq!(a, naive_hit(&linear, &ray), "{ray:?}");
         hits += usize::from(a.is_some());
@@ -165,7 +165,11 @@ fn ties_inside_a_leaf_go_to_the_object_added_first() {
             let o = Vec3::from_f64(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), 0.0);
             let ray = Ray::towards(o, c).unwrap();
             let (a, b) = (linear.hit(&ray, F::infinity()), bvh.hit(&ray, F::infinity()));
-            assert_eq!(a.map(|(h, m)| (h, *m)), b.map(|(h, m)| (h, *m)), "{ray:?}");
+            assert_eq!(
+                a.map(|(h, m)| (h, m.clone())),
+                b.map(|(h, m)| (h, m.clone())),
+                "{ray:?}"
+            );
             hits += usize::from(a.is_some());
         }
         assert_eq!(hits, spheres.len(), "every ray aims at a sphere's centre");

@@ -112,7 +112,7 @@ fn brighter(scene: &EnumScene<f64>, factor: f64) -> EnumScene<f64> {
     let mut out = EnumScene::new(*scene.background());
     out.set_acceleration(scene.acceleration());
     for o in scene.objects() {
-        let material = match o.material {
+        let material = match &o.material {
             MaterialKind::Emissive(e) => {
                 let emission = e.emission();
                 let light = Emissive::new(emission.radiance() * factor).unwrap();
@@ -122,7 +122,7 @@ fn brighter(scene: &EnumScene<f64>, factor: f64) -> EnumScene<f64> {
                     .unwrap()
                     .into()
             }
-            m => m,
+            m => m.clone(),
         };
         out.add(o.shape.clone(), material);
     }
