@@ -18,6 +18,7 @@ mod adversarial_files;
 mod adversarial_scenes;
 mod advice;
 mod bad_input;
+mod bsdf_chi2;
 mod bvh_scene;
 mod cli;
 mod custom_shape;
