@@ -19,6 +19,8 @@ mod adversarial_scenes;
 mod advice;
 mod bad_input;
 mod bsdf_chi2;
+mod bsdf_consistency;
+mod bsdf_energy;
 mod bvh_scene;
 mod cli;
 mod custom_shape;
