@@ -152,7 +152,7 @@ impl<F: Float> Microfacet<F> {
     ///   `t₂ = (1 − s)√(1 − t₁²) + s·r sin φ` in a frame `(T₁, T₂, V)` about the
     ///   stretched `V`, `N = t₁T₁ + t₂T₂ + √(1 − t₁² − t₂²)V`, `m ∝ (αu N_x, αv N_y, N_z)`;
     /// - Beckmann, Mitsuba's method (Jakob 2014): the visible slopes of the unit surface
-    ///   by numerical inversion ([`beckmann`]'s `visible_slopes`), rotated to the
+    ///   by numerical inversion (`microfacet/beckmann.rs`), rotated to the
     ///   stretched azimuth, scaled by `(αu, αv)`; `m ∝ (−x̃, −ỹ, 1)`.
     pub fn sample_visible(&self, wo: Vec3<F>, u: [f64; 2]) -> Vec3<F> {
         match self.distribution {

@@ -252,7 +252,7 @@ impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Plastic<F> {
         let [x, y, z] = cosine_hemisphere(u);
         let i = Vec3::from_f64(x, y, z);
         let pdf = (F::one() - ps) * i.z * lit::<F>(FRAC_1_PI);
-        if !(pdf > F::zero()) {
+        if pdf <= F::zero() || pdf.is_nan() {
             return None;
         }
         Some(BsdfSample {

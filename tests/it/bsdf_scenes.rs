@@ -233,3 +233,23 @@ fn cast_materials_are_the_materials_made_in_the_scalar() {
         assert_eq!(cast.lobes(), w.material.lobes());
     }
 }
+
+/// The examples of `docs/SCENE_FORMAT.md`'s section on these materials build as written.
+#[test]
+fn the_format_docs_examples_build() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/SCENE_FORMAT.md");
+    let doc = std::fs::read_to_string(&path).unwrap();
+    let start = doc.find("### Mitsuba 3's materials").unwrap();
+    let end = start + doc[start..].find("## `[[objects]]`").unwrap();
+    let blocks: Vec<&str> = doc[start..end]
+        .split("```toml\n")
+        .skip(1)
+        .map(|b| b.split("```").next().unwrap())
+        .collect();
+    assert_eq!(blocks.len(), 3);
+    for block in blocks {
+        let file = SceneFile::parse(block, &path).unwrap_or_else(|e| panic!("{e}\n{block}"));
+        file.build::<f32>().unwrap_or_else(|e| panic!("{e}\n{block}"));
+        file.build::<f64>().unwrap_or_else(|e| panic!("{e}\n{block}"));
+    }
+}
