@@ -89,203 +89,44 @@ const fn case(spec: Spec, theta: f64, front: bool, axis: Axis, scalar: Scalar) -
 use Axis::{Mirror, Normal, Refracted};
 use Scalar::{F32, F64};
 
+#[rustfmt::skip]
 const CONDUCTORS: [Case; 11] = [
-    case(
-        Spec::RoughConductor(Ggx, (0.01, 0.01), "Au"),
-        30.0,
-        true,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughConductor(Ggx, (0.1, 0.1), "Cu"),
-        60.0,
-        true,
-        Mirror,
-        F64,
-    ),
-    case(
-        Spec::RoughConductor(Ggx, (0.5, 0.5), "Al"),
-        85.0,
-        true,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughConductor(Ggx, (1.0, 1.0), "Ag"),
-        0.0,
-        true,
-        Normal,
-        F64,
-    ),
-    case(
-        Spec::RoughConductor(Ggx, (0.05, 0.4), "Cr"),
-        70.0,
-        true,
-        Mirror,
-        F64,
-    ),
-    case(
-        Spec::RoughConductor(Beckmann, (0.01, 0.01), "Au"),
-        80.0,
-        true,
-        Mirror,
-        F64,
-    ),
-    case(
-        Spec::RoughConductor(Beckmann, (0.1, 0.1), "Cu"),
-        0.0,
-        true,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughConductor(Beckmann, (0.5, 0.5), "W"),
-        45.0,
-        true,
-        Mirror,
-        F64,
-    ),
-    case(
-        Spec::RoughConductor(Beckmann, (1.0, 1.0), "Ni_palik"),
-        89.5,
-        true,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughConductor(Beckmann, (0.3, 0.08), "TiN"),
-        60.0,
-        true,
-        Mirror,
-        F32,
-    ),
-    Case {
-        normal: OBLIQUE,
-        ..case(
-            Spec::RoughConductor(Ggx, (0.2, 0.2), "Au"),
-            50.0,
-            true,
-            Mirror,
-            F64,
-        )
-    },
+    case(Spec::RoughConductor(Ggx, (0.01, 0.01), "Au"), 30.0, true, Mirror, F32),
+    case(Spec::RoughConductor(Ggx, (0.1, 0.1), "Cu"), 60.0, true, Mirror, F64),
+    case(Spec::RoughConductor(Ggx, (0.5, 0.5), "Al"), 85.0, true, Mirror, F32),
+    case(Spec::RoughConductor(Ggx, (1.0, 1.0), "Ag"), 0.0, true, Normal, F64),
+    case(Spec::RoughConductor(Ggx, (0.05, 0.4), "Cr"), 70.0, true, Mirror, F64),
+    case(Spec::RoughConductor(Beckmann, (0.01, 0.01), "Au"), 80.0, true, Mirror, F64),
+    case(Spec::RoughConductor(Beckmann, (0.1, 0.1), "Cu"), 0.0, true, Mirror, F32),
+    case(Spec::RoughConductor(Beckmann, (0.5, 0.5), "W"), 45.0, true, Mirror, F64),
+    case(Spec::RoughConductor(Beckmann, (1.0, 1.0), "Ni_palik"), 89.5, true, Mirror, F32),
+    case(Spec::RoughConductor(Beckmann, (0.3, 0.08), "TiN"), 60.0, true, Mirror, F32),
+    Case { normal: OBLIQUE, ..case(Spec::RoughConductor(Ggx, (0.2, 0.2), "Au"), 50.0, true, Mirror, F64) },
 ];
 
+#[rustfmt::skip]
 const DIELECTRICS: [Case; 10] = [
-    case(
-        Spec::RoughDielectric(Ggx, (0.01, 0.01), 1.5),
-        40.0,
-        true,
-        Refracted(1.5),
-        F64,
-    ),
-    case(
-        Spec::RoughDielectric(Ggx, (0.1, 0.1), 1.5),
-        70.0,
-        true,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughDielectric(Ggx, (0.5, 0.5), 1.5),
-        20.0,
-        false,
-        Refracted(1.0 / 1.5),
-        F64,
-    ),
-    case(
-        Spec::RoughDielectric(Ggx, (1.0, 1.0), 1.33),
-        89.5,
-        true,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughDielectric(Ggx, (0.05, 0.3), 1.5),
-        60.0,
-        false,
-        Mirror,
-        F64,
-    ),
-    case(
-        Spec::RoughDielectric(Beckmann, (0.01, 0.01), 1.5),
-        60.0,
-        false,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughDielectric(Beckmann, (0.1, 0.1), 2.4),
-        0.0,
-        true,
-        Refracted(2.4),
-        F64,
-    ),
-    case(
-        Spec::RoughDielectric(Beckmann, (0.5, 0.5), 1.5),
-        80.0,
-        false,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughDielectric(Beckmann, (1.0, 1.0), 1.5),
-        35.0,
-        true,
-        Normal,
-        F64,
-    ),
-    Case {
-        normal: OBLIQUE,
-        ..case(
-            Spec::RoughDielectric(Beckmann, (0.2, 0.2), 1.5),
-            30.0,
-            true,
-            Refracted(1.5),
-            F32,
-        )
-    },
+    case(Spec::RoughDielectric(Ggx, (0.01, 0.01), 1.5), 40.0, true, Refracted(1.5), F64),
+    case(Spec::RoughDielectric(Ggx, (0.1, 0.1), 1.5), 70.0, true, Mirror, F32),
+    case(Spec::RoughDielectric(Ggx, (0.5, 0.5), 1.5), 20.0, false, Refracted(1.0 / 1.5), F64),
+    case(Spec::RoughDielectric(Ggx, (1.0, 1.0), 1.33), 89.5, true, Mirror, F32),
+    case(Spec::RoughDielectric(Ggx, (0.05, 0.3), 1.5), 60.0, false, Mirror, F64),
+    case(Spec::RoughDielectric(Beckmann, (0.01, 0.01), 1.5), 60.0, false, Mirror, F32),
+    case(Spec::RoughDielectric(Beckmann, (0.1, 0.1), 2.4), 0.0, true, Refracted(2.4), F64),
+    case(Spec::RoughDielectric(Beckmann, (0.5, 0.5), 1.5), 80.0, false, Mirror, F32),
+    case(Spec::RoughDielectric(Beckmann, (1.0, 1.0), 1.5), 35.0, true, Normal, F64),
+    Case { normal: OBLIQUE, ..case(Spec::RoughDielectric(Beckmann, (0.2, 0.2), 1.5), 30.0, true, Refracted(1.5), F32) },
 ];
 
+#[rustfmt::skip]
 const PLASTICS: [Case; 7] = [
-    case(
-        Spec::RoughPlastic(Ggx, 0.01, [0.5, 0.5, 0.5], false),
-        50.0,
-        true,
-        Mirror,
-        F64,
-    ),
-    case(
-        Spec::RoughPlastic(Ggx, 0.3, [0.9, 0.2, 0.1], true),
-        85.0,
-        true,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughPlastic(Beckmann, 0.1, [0.2, 0.4, 0.8], false),
-        0.0,
-        true,
-        Mirror,
-        F32,
-    ),
-    case(
-        Spec::RoughPlastic(Beckmann, 1.0, [0.5, 0.5, 0.5], false),
-        60.0,
-        true,
-        Normal,
-        F64,
-    ),
+    case(Spec::RoughPlastic(Ggx, 0.01, [0.5, 0.5, 0.5], false), 50.0, true, Mirror, F64),
+    case(Spec::RoughPlastic(Ggx, 0.3, [0.9, 0.2, 0.1], true), 85.0, true, Mirror, F32),
+    case(Spec::RoughPlastic(Beckmann, 0.1, [0.2, 0.4, 0.8], false), 0.0, true, Mirror, F32),
+    case(Spec::RoughPlastic(Beckmann, 1.0, [0.5, 0.5, 0.5], false), 60.0, true, Normal, F64),
     case(Spec::Plastic([0.5, 0.5, 0.5], false), 0.0, true, Normal, F64),
     case(Spec::Plastic([0.1, 0.8, 0.3], true), 75.0, true, Normal, F32),
-    case(
-        Spec::TwoSidedRoughConductor(Ggx, 0.2, "Au"),
-        40.0,
-        false,
-        Mirror,
-        F64,
-    ),
+    case(Spec::TwoSidedRoughConductor(Ggx, 0.2, "Au"), 40.0, false, Mirror, F64),
 ];
 
 /// The correct runs: the family the significance is corrected over.
