@@ -21,6 +21,7 @@ mod bad_input;
 mod bsdf_chi2;
 mod bsdf_consistency;
 mod bsdf_energy;
+mod bsdf_mitsuba;
 mod bsdf_scenes;
 mod bvh_scene;
 mod cli;
