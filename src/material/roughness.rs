@@ -98,3 +98,76 @@ impl<F: Float> Roughness<F> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn any_positive_alpha_is_accepted_and_nothing_else() {
+        let scalar = |a: f64| Texture::scalar(a);
+        for a in [1e-4, 1e-9, 0.1, 1.0, 50.0] {
+            assert!(Roughness::isotropic(Distribution::Ggx, scalar(a)).is_ok(), "{a}");
+        }
+        for a in [0.0, -0.1, f64::NAN, f64::INFINITY] {
+            let e = Roughness::isotropic(Distribution::Ggx, scalar(a)).unwrap_err();
+            assert!(
+                matches!(
+                    e,
+                    crate::Error::InvalidValue {
+                        field: Field::Alpha,
+                        ..
+                    }
+                ),
+                "{a}: {e}"
+            );
+            let e = Roughness::anisotropic(Distribution::Beckmann, scalar(0.1), scalar(a)).unwrap_err();
+            assert!(
+                matches!(
+                    e,
+                    crate::Error::InvalidValue {
+                        field: Field::AlphaV,
+                        ..
+                    }
+                ),
+                "{a}: {e}"
+            );
+        }
+        // A colour texture must be positive in every channel it holds.
+        let mixed = Texture::constant(crate::vec3::Vec3::new(0.1, 0.0, 0.1));
+        assert!(Roughness::isotropic(Distribution::Ggx, mixed).is_err());
+    }
+
+    #[test]
+    fn the_distribution_at_a_hit_is_made_of_its_alphas() {
+        let r = Roughness::anisotropic(Distribution::Ggx, Texture::scalar(0.2f64), Texture::scalar(0.05))
+            .unwrap();
+        assert!(r.is_anisotropic() && r.reads_coordinates());
+        let hit = Hit::new(
+            crate::shape::Surface::bare(
+                1.0,
+                crate::vec3::Vec3::zero(),
+                crate::vec3::Vec3::new(0.0, 0.0, 1.0),
+            ),
+            crate::vec3::Vec3::new(0.0, 0.0, -1.0),
+        );
+        assert_eq!(r.at(&hit).alpha(), (0.2, 0.05));
+        let iso = Roughness::isotropic(Distribution::Beckmann, Texture::scalar(1e-6f64)).unwrap();
+        assert!(!iso.reads_coordinates());
+        assert_eq!(iso.at(&hit).alpha(), (1e-4, 1e-4), "raised to the floor");
+        assert_eq!(
+            iso.cast::<f32>()
+                .unwrap()
+                .at(&Hit::new(
+                    crate::shape::Surface::bare(
+                        1.0,
+                        crate::vec3::Vec3::zero(),
+                        crate::vec3::Vec3::new(0.0, 0.0, 1.0)
+                    ),
+                    crate::vec3::Vec3::new(0.0, 0.0, -1.0),
+                ))
+                .alpha(),
+            (1e-4, 1e-4)
+        );
+    }
+}

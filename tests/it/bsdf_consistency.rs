@@ -2,7 +2,8 @@
 //! weight is `eval/pdf` and its density is `pdf`; reflection is reciprocal,
 //! `f(wo, wi) = f(wi, wo)`, and refraction through a rough dielectric obeys the
 //! generalised reciprocity of radiance, `f(wo, wi)/η_o² = f(wi, wo)/η_i²`; the delta
-//! lobes give no value to any direction. (That each pdf integrates to at most 1 is
+//! lobes give no value to any direction, and the thin sheet picks its two deltas with the
+//! probabilities it reports. (That each pdf integrates to at most 1 is
 //! checked by every χ² run, `bsdf_chi2.rs`, over the whole sphere.)
 
 use crate::common;
@@ -203,6 +204,42 @@ fn deltas_have_no_value<F: Float>() {
     }
 }
 
+/// The thin sheet reflects with the probability it reports, `R' = 2R/(1 + R)`: over `2¹⁶`
+/// draws at each incidence, the count of reflections is within `4.89` standard deviations
+/// of `N·R'` (two-sided significance `10⁻⁶`, the suite's level), and a sheet reflecting
+/// with `R` instead (no inner bounces) would be more than 20 away at 60°.
+fn thin_sheet_reflects_with_its_probability<F: Float>() {
+    let material = Spec::ThinDielectric(1.5).build::<F>();
+    let mut rng = Rng::seed_from_u64(0x7417);
+    let n = 1 << 16;
+    for theta in [0.0, 30.0, 60.0, 85.0] {
+        let s = setup::<F>([0.0, 0.0, 1.0], theta, 0.0, true);
+        let mut reflected = 0u32;
+        let mut claimed = 0.0;
+        for _ in 0..n {
+            let b = Scatter::<F, Rng>::sample(&material, &s.hit, s.wo, &mut rng).unwrap();
+            if b.lobe.contains(raytrace::material::Lobes::REFLECTION) {
+                reflected += 1;
+                claimed = b.pdf.to_f64();
+            }
+        }
+        let r = raytrace::optics::fresnel(theta.to_radians().cos(), 1.0 / 1.5);
+        let want = 2.0 * r / (1.0 + r);
+        assert!((claimed - want).abs() < 1e-6, "{theta}: {claimed} vs {want}");
+        let sd = (n as f64 * want * (1.0 - want)).sqrt();
+        let z = (f64::from(reflected) - n as f64 * want) / sd;
+        let z_single = (f64::from(reflected) - n as f64 * r) / sd;
+        println!(
+            "{} θ = {theta}: R' = {want:.4}, z = {z:.2} (against R: {z_single:.1})",
+            F::NAME
+        );
+        assert!(z.abs() <= common::Z_ALPHA, "{theta}: z = {z}");
+        if theta == 60.0 {
+            assert!(z_single > 20.0, "{z_single}");
+        }
+    }
+}
+
 macro_rules! for_each_scalar {
     ($($name:ident),*) => {$(
         #[test]
@@ -214,5 +251,10 @@ macro_rules! for_each_scalar {
 }
 
 mod f32_and_f64 {
-    for_each_scalar!(samples_agree_with_eval_and_pdf, reciprocity, deltas_have_no_value);
+    for_each_scalar!(
+        samples_agree_with_eval_and_pdf,
+        reciprocity,
+        deltas_have_no_value,
+        thin_sheet_reflects_with_its_probability
+    );
 }
