@@ -60,9 +60,11 @@ print('//! Mitsuba 3\'s values of its BSDFs, for `bsdf_mitsuba.rs`: `(material, 
 print('//! light (θ, φ), eval, pdf)`. Printed by tools/mitsuba_bsdf_values.py (Mitsuba %s,' % mi.__version__)
 print('//! scalar_rgb).')
 print()
+print('/// `(material, viewer (θ, φ), light (θ, φ), eval, pdf)`, angles in degrees.')
+print('pub type Row = (usize, [f64; 2], [f64; 2], [f64; 3], f64);')
+print()
 print('#[rustfmt::skip]')
-print('pub const MITSUBA: [(usize, [f64; 2], [f64; 2], [f64; 3], f64); %d] = [' %
-      (len(MATERIALS) * len(VIEWS) * len(LIGHTS)))
+print('pub const MITSUBA: [Row; %d] = [' % (len(MATERIALS) * len(VIEWS) * len(LIGHTS)))
 for k, m in enumerate(MATERIALS):
     bsdf = mi.load_dict(m)
     for view in VIEWS:

@@ -2,8 +2,11 @@
 //! light (θ, φ), eval, pdf)`. Printed by tools/mitsuba_bsdf_values.py (Mitsuba 3.9.1,
 //! scalar_rgb).
 
+/// `(material, viewer (θ, φ), light (θ, φ), eval, pdf)`, angles in degrees.
+pub type Row = (usize, [f64; 2], [f64; 2], [f64; 3], f64);
+
 #[rustfmt::skip]
-pub const MITSUBA: [(usize, [f64; 2], [f64; 2], [f64; 3], f64); 165] = [
+pub const MITSUBA: [Row; 165] = [
     (0, [40.0, 20.0], [40.0, 200.0], [2.47356629, 2.0516963, 0.848054826], 2.57899308),
     (0, [40.0, 20.0], [20.0, 180.0], [0.66988939, 0.555668414, 0.226006791], 0.694074273),
     (0, [40.0, 20.0], [70.0, 90.0], [0.0103922188, 0.0086200526, 0.0035109946], 0.0115120756),
