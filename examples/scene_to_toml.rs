@@ -128,7 +128,13 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
         let material = match named.iter().find(|(m, _)| *m == o.material) {
             Some((_, name)) => name.clone(),
             None => {
-                let (kind, spec) = material(&o.material);
+                let (kind, spec) = material(&o.material).ok_or_else(|| {
+                    let why = format!(
+                        "{}: only the specification's materials and emitters are written",
+                        e.name
+                    );
+                    raytrace::Error::InvalidSettings(why)
+                })?;
                 let name = format!("{kind}_{}", named.len());
                 file.materials.insert(name.clone(), spec);
                 named.push((o.material.clone(), name.clone()));
@@ -165,8 +171,10 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
     Ok(file)
 }
 
-fn material(m: &MaterialKind<f64>) -> (&'static str, MaterialSpec) {
-    match m {
+/// The file's entry for one of the specification's materials or an emitter (the examples
+/// use no other); `None` for the others.
+fn material(m: &MaterialKind<f64>) -> Option<(&'static str, MaterialSpec)> {
+    Some(match m {
         MaterialKind::Mirror(m) => (
             "mirror",
             MaterialSpec::Mirror {
@@ -201,8 +209,15 @@ fn material(m: &MaterialKind<f64>) -> (&'static str, MaterialSpec) {
                 albedo: (m.albedo() != Vec3::zero()).then(|| m.albedo().to_f64()),
             },
         ),
-        MaterialKind::NormalMap(_) => unimplemented!("the examples use no normal map"),
-    }
+        MaterialKind::NormalMap(_)
+        | MaterialKind::Conductor(_)
+        | MaterialKind::RoughConductor(_)
+        | MaterialKind::RoughDielectric(_)
+        | MaterialKind::ThinDielectric(_)
+        | MaterialKind::Plastic(_)
+        | MaterialKind::RoughPlastic(_)
+        | MaterialKind::TwoSided(_) => return None,
+    })
 }
 
 fn run() -> raytrace::Result<()> {

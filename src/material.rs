@@ -1,24 +1,55 @@
 //! The spec's abstract material as a BSDF: the [`Material`] and [`Scatter`] traits,
 //! what they answer ([`Lobes`], [`Eval`], [`BsdfSample`]), the concrete materials, and
 //! [`MaterialKind`], the enum fast path over them.
+//!
+//! Besides the specification's three materials and the emitter, the materials of
+//! Mitsuba 3 that scenes use most, each defined as Mitsuba defines it so that the two
+//! renderers can be compared: [`Conductor`] and [`RoughConductor`] (metals, [`Metal`]),
+//! [`RoughDielectric`], [`ThinDielectric`], [`Plastic`] and [`RoughPlastic`]
+//! ([`Coated`]), and the [`TwoSided`] wrapper. The rough ones share a [`microfacet`]
+//! distribution ([`Roughness`]); [`ior`] names the media and metals.
 
 mod bsdf;
+mod coating;
+mod conductor;
 mod dielectric;
 mod emissive;
+mod interface;
+pub mod ior;
 mod kind;
 mod lambertian;
+pub mod microfacet;
 mod mirror;
 mod normal_map;
+mod param;
+mod plastic;
+mod rough_conductor;
+mod rough_dielectric;
+mod rough_plastic;
+mod roughness;
 mod shared;
+mod thin_dielectric;
+mod two_sided;
 
 pub use bsdf::{BsdfSample, Eval, Lobes};
+pub use conductor::{Conductor, Metal};
 pub use dielectric::{Dielectric, Reflectance};
 pub use emissive::{Emission, Emissive};
+pub use interface::Interface;
+pub use ior::Ior;
 pub use kind::MaterialKind;
 pub use lambertian::{CosineSampler, Lambertian};
+pub use microfacet::{Distribution, Microfacet};
 pub use mirror::Mirror;
 pub use normal_map::NormalMap;
+pub use plastic::{Coated, Plastic};
+pub use rough_conductor::RoughConductor;
+pub use rough_dielectric::RoughDielectric;
+pub use rough_plastic::RoughPlastic;
+pub use roughness::Roughness;
 pub use shared::SharedMaterial;
+pub use thin_dielectric::ThinDielectric;
+pub use two_sided::TwoSided;
 
 use crate::float::Float;
 use crate::shape::Hit;

@@ -142,6 +142,17 @@ pub fn uniform_sphere(u: [f64; 2]) -> [f64; 3] {
     [r * cos_p, r * sin_p, z]
 }
 
+/// A cosine-distributed unit vector about `+z` from `u ∈ [0, 1)²`:
+/// `cos θ = √(1 − u₀)`, `sin θ = √u₀`, `φ = 2πu₁`, `(sin θ cos φ, sin θ sin φ, cos θ)`;
+/// density `cos θ/π`. The local form of [`cosine_direction`], for materials that work in
+/// their shading frame.
+#[inline]
+pub fn cosine_hemisphere(u: [f64; 2]) -> [f64; 3] {
+    let r = u[0].sqrt();
+    let (sin_p, cos_p) = (std::f64::consts::TAU * u[1]).sin_cos();
+    [r * cos_p, r * sin_p, (1.0 - u[0]).sqrt()]
+}
+
 /// The offset of a jittered sample inside its pixel: a uniform point of
 /// `[−½, ½)²`, in pixel units.
 #[inline]

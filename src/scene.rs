@@ -101,6 +101,13 @@ impl<F: Float> EnumScene<F> {
                 MaterialKind::Dielectric(m) => Arc::new(*m).into(),
                 MaterialKind::Emissive(m) => Arc::new(*m).into(),
                 MaterialKind::NormalMap(m) => Arc::clone(m).into(),
+                MaterialKind::Conductor(m) => Arc::clone(m).into(),
+                MaterialKind::RoughConductor(m) => Arc::clone(m).into(),
+                MaterialKind::RoughDielectric(m) => Arc::clone(m).into(),
+                MaterialKind::ThinDielectric(m) => Arc::clone(m).into(),
+                MaterialKind::Plastic(m) => Arc::clone(m).into(),
+                MaterialKind::RoughPlastic(m) => Arc::clone(m).into(),
+                MaterialKind::TwoSided(m) => Arc::clone(m).into(),
             };
             scene.add(shape, material);
         }

@@ -31,12 +31,14 @@
 //! # Ok::<(), raytrace::Error>(())
 //! ```
 
+mod bsdf;
 mod build;
 mod camera;
 mod check;
 mod integer;
 mod location;
 mod make;
+mod make_bsdf;
 mod model;
 mod resolve;
 mod texture_spec;
@@ -44,6 +46,10 @@ mod transform;
 mod triple;
 mod warnings;
 
+pub use bsdf::{
+    ConductorSpec, DistributionSpec, IorSpec, PlasticSpec, RoughConductorSpec, RoughDielectricSpec,
+    RoughPlasticSpec, RoughnessSpec, ThinDielectricSpec, TwoSidedSpec,
+};
 pub use build::{Built, Summary};
 pub use camera::FileCamera;
 pub use model::{
@@ -197,7 +203,7 @@ impl SceneFile {
             .materials
             .values()
             .flat_map(|m| m.textures())
-            .filter_map(|(_, t)| match t {
+            .filter_map(|t| match t {
                 TextureRef::Inline(spec) => Some(spec.as_ref()),
                 _ => None,
             });

@@ -49,6 +49,32 @@ pub enum Field {
     TextureScale,
     /// [`UvMap::new`](crate::texture::UvMap::new)'s offset.
     TextureOffset,
+    /// A conductor's real index `η` ([`Metal::new`](crate::material::Metal::new)).
+    ConductorEta,
+    /// A conductor's extinction coefficient `k` ([`Metal::new`](crate::material::Metal::new)).
+    ConductorK,
+    /// A named conductor ([`Metal::named`](crate::material::Metal::named)) that is not known.
+    ConductorName,
+    /// A material's factor on its specular reflection (`specular_reflectance`).
+    SpecularReflectance,
+    /// A material's factor on its specular transmission (`specular_transmittance`).
+    SpecularTransmittance,
+    /// A plastic's diffuse base (`diffuse_reflectance`).
+    DiffuseReflectance,
+    /// An isotropic roughness `α` ([`Roughness::isotropic`](crate::material::Roughness::isotropic)).
+    Alpha,
+    /// An anisotropic roughness along the tangent, `αu` ([`Roughness::anisotropic`](crate::material::Roughness::anisotropic)).
+    AlphaU,
+    /// An anisotropic roughness along the bitangent, `αv` ([`Roughness::anisotropic`](crate::material::Roughness::anisotropic)).
+    AlphaV,
+    /// The index of refraction inside a dielectric interface (`int_ior`).
+    InteriorIndex,
+    /// The index of refraction outside a dielectric interface (`ext_ior`).
+    ExteriorIndex,
+    /// [`TwoSided::new`](crate::material::TwoSided::new)'s material for the front face.
+    TwoSidedFront,
+    /// [`TwoSided::with_back`](crate::material::TwoSided::with_back)'s material for the back face.
+    TwoSidedBack,
     /// [`PointLight::new`](crate::PointLight::new)'s position.
     LightPosition,
     /// [`PointLight::new`](crate::PointLight::new)'s intensity.
@@ -123,6 +149,19 @@ impl Field {
             Self::CheckerboardColor1 => "checkerboard colour 1",
             Self::TextureScale => "texture uv scale",
             Self::TextureOffset => "texture uv offset",
+            Self::ConductorEta => "conductor index η",
+            Self::ConductorK => "conductor extinction k",
+            Self::ConductorName => "conductor name",
+            Self::SpecularReflectance => "specular reflectance",
+            Self::SpecularTransmittance => "specular transmittance",
+            Self::DiffuseReflectance => "diffuse reflectance",
+            Self::Alpha => "roughness α",
+            Self::AlphaU => "roughness αu",
+            Self::AlphaV => "roughness αv",
+            Self::InteriorIndex => "interior index of refraction",
+            Self::ExteriorIndex => "exterior index of refraction",
+            Self::TwoSidedFront => "two-sided front material",
+            Self::TwoSidedBack => "two-sided back material",
             Self::LightPosition => "light position",
             Self::LightIntensity => "light intensity",
             Self::BackgroundColor => "background colour",

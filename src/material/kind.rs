@@ -1,7 +1,8 @@
 //! [`MaterialKind`]: the enum fast path over the concrete materials.
 
 use super::{
-    BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror, NormalMap, Scatter,
+    BsdfSample, Conductor, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror,
+    NormalMap, Plastic, RoughConductor, RoughDielectric, RoughPlastic, Scatter, ThinDielectric, TwoSided,
 };
 use crate::float::Float;
 use crate::shape::Hit;
@@ -11,7 +12,10 @@ use std::sync::Arc;
 
 /// The enum fast path: every concrete material, dispatched by `match`.
 ///
-/// Not `Copy`: a matte surface's albedo may be a texture, shared behind an `Arc`.
+/// The specification's materials are stored inline; the others, larger (textures, tables,
+/// a wrapped material), behind an `Arc`, shared by every object that uses them, so a scene
+/// of the spec's materials keeps its small objects (and the enum is `Clone`, not `Copy`: a
+/// matte surface's albedo may be a texture).
 #[derive(Clone, Debug, PartialEq)]
 pub enum MaterialKind<F> {
     /// A [`Mirror`].
@@ -25,6 +29,20 @@ pub enum MaterialKind<F> {
     /// Another material under a [`NormalMap`] (behind an `Arc`: the wrapped material is
     /// one of these).
     NormalMap(Arc<NormalMap<F>>),
+    /// A smooth [`Conductor`] (a polished metal).
+    Conductor(Arc<Conductor<F>>),
+    /// A [`RoughConductor`] (a brushed metal).
+    RoughConductor(Arc<RoughConductor<F>>),
+    /// A [`RoughDielectric`] (frosted glass).
+    RoughDielectric(Arc<RoughDielectric<F>>),
+    /// A [`ThinDielectric`] sheet (a window pane).
+    ThinDielectric(Arc<ThinDielectric<F>>),
+    /// A smooth [`Plastic`].
+    Plastic(Arc<Plastic<F>>),
+    /// A [`RoughPlastic`].
+    RoughPlastic(Arc<RoughPlastic<F>>),
+    /// A [`TwoSided`] wrapper.
+    TwoSided(Arc<TwoSided<F>>),
 }
 
 /// `match` on a [`MaterialKind`], the same call on every variant: no arm can be left out.
@@ -36,6 +54,13 @@ macro_rules! each_material {
             MaterialKind::Dielectric($m) => $call,
             MaterialKind::Emissive($m) => $call,
             MaterialKind::NormalMap($m) => $call,
+            MaterialKind::Conductor($m) => $call,
+            MaterialKind::RoughConductor($m) => $call,
+            MaterialKind::RoughDielectric($m) => $call,
+            MaterialKind::ThinDielectric($m) => $call,
+            MaterialKind::Plastic($m) => $call,
+            MaterialKind::RoughPlastic($m) => $call,
+            MaterialKind::TwoSided($m) => $call,
         }
     };
 }
@@ -96,11 +121,32 @@ impl<F> From<Emissive<F>> for MaterialKind<F> {
     }
 }
 
-impl<F> From<NormalMap<F>> for MaterialKind<F> {
-    fn from(m: NormalMap<F>) -> Self {
-        Self::NormalMap(Arc::new(m))
-    }
+/// `From` a material stored behind an `Arc`: the material itself or its `Arc`.
+macro_rules! from_shared {
+    ($($t:ident),*) => {$(
+        impl<F> From<$t<F>> for MaterialKind<F> {
+            fn from(m: $t<F>) -> Self {
+                Self::$t(Arc::new(m))
+            }
+        }
+
+        impl<F> From<Arc<$t<F>>> for MaterialKind<F> {
+            fn from(m: Arc<$t<F>>) -> Self {
+                Self::$t(m)
+            }
+        }
+    )*};
 }
+from_shared!(
+    Conductor,
+    RoughConductor,
+    RoughDielectric,
+    ThinDielectric,
+    Plastic,
+    RoughPlastic,
+    TwoSided,
+    NormalMap
+);
 
 impl<F: Float> MaterialKind<F> {
     /// This material in scalar `G`, rounded through `f64` and re-validated, as [`EnumScene::cast`](crate::EnumScene::cast) explains.
@@ -116,6 +162,13 @@ impl<F: Float> MaterialKind<F> {
                 .into(),
             Self::Emissive(m) => m.cast()?.into(),
             Self::NormalMap(m) => m.cast()?.into(),
+            Self::Conductor(m) => m.cast()?.into(),
+            Self::RoughConductor(m) => m.cast()?.into(),
+            Self::RoughDielectric(m) => m.cast()?.into(),
+            Self::ThinDielectric(m) => m.cast()?.into(),
+            Self::Plastic(m) => m.cast()?.into(),
+            Self::RoughPlastic(m) => m.cast()?.into(),
+            Self::TwoSided(m) => m.cast()?.into(),
         })
     }
 }

@@ -123,6 +123,8 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
     })
 }
 
+/// The material `spec` at `at`: a two-sided one's materials at the keys `front` and
+/// `back`, so their errors are reported there.
 fn unknown_material(name: &str, known: &BTreeMap<&str, MaterialKind<impl Float>>) -> String {
     if known.is_empty() {
         format!("no material named `{name}`: the file defines no [materials]")

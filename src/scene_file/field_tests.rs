@@ -142,6 +142,77 @@ fn case(field: Field) -> Option<Case> {
             true,
             "textures.t.offset",
         ),
+        Field::ConductorEta => (
+            material("conductor", "eta = [-1, 0, 0]"),
+            false,
+            "materials.x.eta",
+        ),
+        Field::ConductorK => (
+            material("rough_conductor", "k = [0, nan, 0]"),
+            false,
+            "materials.x.k",
+        ),
+        Field::ConductorName => (
+            material("conductor", "material = \"Fe\""),
+            false,
+            "materials.x.material",
+        ),
+        Field::SpecularReflectance => (
+            material(
+                "conductor",
+                "material = \"Au\"\nspecular_reflectance = [1.5, 0, 0]",
+            ),
+            false,
+            "materials.x.specular_reflectance",
+        ),
+        Field::SpecularTransmittance => (
+            material("rough_dielectric", "specular_transmittance = [0, 0, -1]"),
+            false,
+            "materials.x.specular_transmittance",
+        ),
+        Field::DiffuseReflectance => (
+            material("plastic", "diffuse_reflectance = [2, 0, 0]"),
+            false,
+            "materials.x.diffuse_reflectance",
+        ),
+        Field::Alpha => (
+            material("rough_conductor", "alpha = 1e-50"),
+            true,
+            "materials.x.alpha",
+        ),
+        Field::AlphaU => (
+            material("rough_conductor", "alpha_u = 0\nalpha_v = 0.1"),
+            false,
+            "materials.x.alpha_u",
+        ),
+        Field::AlphaV => (
+            material("rough_dielectric", "alpha_u = 0.1\nalpha_v = nan"),
+            false,
+            "materials.x.alpha_v",
+        ),
+        Field::InteriorIndex => (
+            material("thin_dielectric", "int_ior = \"unobtainium\""),
+            false,
+            "materials.x.int_ior",
+        ),
+        Field::ExteriorIndex => (
+            material("rough_plastic", "ext_ior = 1e-60"),
+            true,
+            "materials.x.ext_ior",
+        ),
+        Field::TwoSidedFront => (
+            material("two_sided", "front = { type = \"dielectric\", index = 1.5 }"),
+            false,
+            "materials.x.front",
+        ),
+        Field::TwoSidedBack => (
+            material(
+                "two_sided",
+                "front = { type = \"plastic\" }\nback = { type = \"emissive\", radiance = [1, 1, 1] }",
+            ),
+            false,
+            "materials.x.back",
+        ),
         Field::LightPosition => (
             "[[lights]]\nposition = [1e39, 0, 0]\nintensity = [1, 1, 1]\n".into(),
             true,
@@ -223,7 +294,7 @@ fn small_map() -> &'static Path {
 /// Every field but those no scene file can get wrong (a user's own, a rotation matrix). A
 /// field added to [`Field`] needs a case in the `match` above to compile, and belongs here
 /// too.
-const FIELDS: [Field; 36] = [
+const FIELDS: [Field; 49] = [
     Field::SphereCenter,
     Field::SphereRadius,
     Field::PlanePoint,
@@ -243,6 +314,19 @@ const FIELDS: [Field; 36] = [
     Field::CheckerboardColor1,
     Field::TextureScale,
     Field::TextureOffset,
+    Field::ConductorEta,
+    Field::ConductorK,
+    Field::ConductorName,
+    Field::SpecularReflectance,
+    Field::SpecularTransmittance,
+    Field::DiffuseReflectance,
+    Field::Alpha,
+    Field::AlphaU,
+    Field::AlphaV,
+    Field::InteriorIndex,
+    Field::ExteriorIndex,
+    Field::TwoSidedFront,
+    Field::TwoSidedBack,
     Field::LightPosition,
     Field::LightIntensity,
     Field::BackgroundColor,
@@ -339,5 +423,32 @@ fn the_key_follows_the_field_not_the_message() {
             unreachable!()
         };
         assert_eq!(words.0, location);
+    }
+}
+
+/// A two-sided material's own materials report their errors at their own keys, however
+/// deep.
+#[test]
+fn nested_materials_errors_are_at_their_own_keys() {
+    for (keys, at, field) in [
+        (
+            "front = { type = \"rough_conductor\", alpha = -1 }",
+            "materials.x.front.alpha",
+            Field::Alpha,
+        ),
+        (
+            "front = { type = \"plastic\" }\nback = { type = \"two_sided\", front = { type = \"conductor\", material = \"Xx\" } }",
+            "materials.x.back.front.material",
+            Field::ConductorName,
+        ),
+    ] {
+        let c = Case {
+            text: material("two_sided", keys),
+            f32: false,
+            field,
+            at,
+        };
+        let (location, got, message) = failure(&c);
+        assert_eq!((location.as_str(), got), (at, Some(field)), "{message}");
     }
 }

@@ -4,8 +4,9 @@
 
 use super::camera::FileCamera;
 use super::check::vec;
+use super::make_bsdf;
 use super::model::{BackgroundSpec, FresnelSpec, LightSpec, MaterialSpec};
-use super::resolve::{Inputs, TextureUse};
+use super::resolve::{Inputs, TextureUse, Within};
 use super::transform::Placement;
 use crate::background::{Background, EnvironmentMap};
 use crate::camera::{LookAtCamera, ScreenCamera};
@@ -40,6 +41,23 @@ pub fn shape<G: Float>(solid: Solid) -> Result<ShapeKind<G>> {
 /// The material in `G`, with the textures and materials its keys name from `inputs`.
 pub fn material<G: Float>(spec: &MaterialSpec, inputs: &mut dyn Inputs<G>) -> Result<MaterialKind<G>> {
     Ok(match *spec {
+        MaterialSpec::Conductor(ref c) => make_bsdf::conductor(c, inputs)?,
+        MaterialSpec::RoughConductor(ref c) => make_bsdf::rough_conductor(c, inputs)?,
+        MaterialSpec::RoughDielectric(ref d) => make_bsdf::rough_dielectric(d, inputs)?,
+        MaterialSpec::ThinDielectric(ref d) => make_bsdf::thin_dielectric(d, inputs)?,
+        MaterialSpec::Plastic(ref p) => make_bsdf::plastic(p, inputs)?,
+        MaterialSpec::RoughPlastic(ref p) => make_bsdf::rough_plastic(p, inputs)?,
+        MaterialSpec::TwoSided(ref t) => {
+            let front =
+                material(&t.front, &mut Within(inputs, "front")).map_err(|e| inputs.blame("front", e))?;
+            let back = match &t.back {
+                Some(b) => {
+                    Some(material(b, &mut Within(inputs, "back")).map_err(|e| inputs.blame("back", e))?)
+                }
+                None => None,
+            };
+            make_bsdf::two_sided(front, back)?
+        }
         MaterialSpec::Mirror { albedo } => Mirror::new(vec(albedo))?.into(),
         MaterialSpec::Lambertian { ref albedo } => {
             Lambertian::textured(inputs.texture("albedo", albedo, TextureUse::Color)?)?.into()

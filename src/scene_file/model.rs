@@ -3,7 +3,11 @@
 //! Only the shape and the types of values are checked here; their domains (a radius > 0,
 //! an albedo in `[0, 1]`, a material that exists) are checked when the scene is built.
 
-use super::texture_spec::TextureRef;
+use super::bsdf::{
+    ConductorSpec, PlasticSpec, RoughConductorSpec, RoughDielectricSpec, RoughPlasticSpec,
+    ThinDielectricSpec, TwoSidedSpec,
+};
+use super::texture_spec::{ScalarRef, TextureRef};
 use crate::scene::Acceleration;
 use serde::{Deserialize, Serialize};
 
@@ -234,18 +238,66 @@ pub enum MaterialSpec {
         /// The name of the material it perturbs, a `[materials]` entry.
         material: String,
     },
+    /// A smooth conductor (Mitsuba's `conductor`).
+    Conductor(ConductorSpec),
+    /// A rough conductor (Mitsuba's `roughconductor`).
+    RoughConductor(RoughConductorSpec),
+    /// A rough dielectric (Mitsuba's `roughdielectric`).
+    RoughDielectric(RoughDielectricSpec),
+    /// A thin dielectric sheet (Mitsuba's `thindielectric`).
+    ThinDielectric(ThinDielectricSpec),
+    /// A smooth plastic (Mitsuba's `plastic`).
+    Plastic(PlasticSpec),
+    /// A rough plastic (Mitsuba's `roughplastic`).
+    RoughPlastic(RoughPlasticSpec),
+    /// A one-sided material shaded alike from both faces (Mitsuba's `twosided`).
+    TwoSided(TwoSidedSpec),
 }
 
 impl MaterialSpec {
-    /// The textures its keys hold (a colour counts as a constant texture), each with its
-    /// key: the `match` names every kind, so a kind added with a texture key must say so.
-    pub fn textures(&self) -> Vec<(&'static str, &TextureRef)> {
+    /// The textures its keys hold (a colour counts as a constant texture), a two-sided
+    /// material's included: the `match` names every kind, so a kind added with a texture
+    /// key must say so.
+    pub fn textures(&self) -> Vec<&TextureRef> {
         match self {
-            Self::Lambertian { albedo } => vec![("albedo", albedo)],
-            Self::NormalMap { normal_map, .. } => vec![("normal_map", normal_map)],
+            Self::Lambertian { albedo } => vec![albedo],
+            Self::NormalMap { normal_map, .. } => vec![normal_map],
             Self::Mirror { .. } | Self::Dielectric { .. } | Self::Emissive { .. } => Vec::new(),
+            Self::Conductor(c) => c.specular_reflectance.iter().collect(),
+            Self::RoughConductor(c) => c
+                .specular_reflectance
+                .iter()
+                .chain(alphas([&c.alpha, &c.alpha_u, &c.alpha_v]))
+                .collect(),
+            Self::RoughDielectric(d) => [&d.specular_reflectance, &d.specular_transmittance]
+                .into_iter()
+                .flatten()
+                .chain(alphas([&d.alpha, &d.alpha_u, &d.alpha_v]))
+                .collect(),
+            Self::ThinDielectric(d) => [&d.specular_reflectance, &d.specular_transmittance]
+                .into_iter()
+                .flatten()
+                .collect(),
+            Self::Plastic(p) => std::iter::once(&p.diffuse_reflectance)
+                .chain(&p.specular_reflectance)
+                .collect(),
+            Self::RoughPlastic(p) => std::iter::once(&p.diffuse_reflectance)
+                .chain(&p.specular_reflectance)
+                .collect(),
+            Self::TwoSided(t) => {
+                let mut all = t.front.textures();
+                if let Some(back) = &t.back {
+                    all.extend(back.textures());
+                }
+                all
+            }
         }
     }
+}
+
+/// The textures of a roughness's keys that are given.
+fn alphas(a: [&Option<ScalarRef>; 3]) -> impl Iterator<Item = &TextureRef> {
+    a.into_iter().flatten().map(|r| &r.0)
 }
 
 /// How a dielectric computes its reflectance.

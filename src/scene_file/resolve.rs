@@ -2,11 +2,11 @@
 //! loaded once per file) and, for a material that wraps another, that material.
 
 use super::SceneFile;
-use super::check::{checked, vec};
+use super::check::{blame, checked, vec};
 use super::location::KeyPath;
 use super::make;
 use super::texture_spec::{TextureRef, TextureSpec, UvScale, WrapSpec};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::float::{Float, lit};
 use crate::material::MaterialKind;
 use crate::texture::{Bitmap, Checkerboard, Decode, ImageTexture, Texture, UvMap, Wrap};
@@ -30,6 +30,27 @@ pub trait Inputs<G: Float> {
     fn texture(&mut self, key: &str, value: &TextureRef, usage: TextureUse) -> Result<Texture<G>>;
     /// The material named by the value of the key `key`.
     fn material(&mut self, key: &str, name: &str) -> Result<MaterialKind<G>>;
+    /// `e`, an error of what the table at the key `key` made, placed at that table (a
+    /// library error at its field's own key there).
+    fn blame(&self, key: &str, e: Error) -> Error;
+}
+
+/// The inputs of the table at the key `.0` inside a material's entry (a two-sided
+/// material's `front`): every key it names is under that one.
+pub struct Within<'i, G>(pub &'i mut dyn Inputs<G>, pub &'static str);
+
+impl<G: Float> Inputs<G> for Within<'_, G> {
+    fn texture(&mut self, key: &str, value: &TextureRef, usage: TextureUse) -> Result<Texture<G>> {
+        self.0.texture(&format!("{}.{key}", self.1), value, usage)
+    }
+
+    fn material(&mut self, key: &str, name: &str) -> Result<MaterialKind<G>> {
+        self.0.material(&format!("{}.{key}", self.1), name)
+    }
+
+    fn blame(&self, key: &str, e: Error) -> Error {
+        self.0.blame(&format!("{}.{key}", self.1), e)
+    }
 }
 
 /// Makes a file's materials and their textures, each image file read once.
@@ -210,5 +231,9 @@ impl<G: Float> Inputs<G> for Named<'_, '_, '_> {
             )));
         }
         self.0.material::<G>(name, self.2)
+    }
+
+    fn blame(&self, key: &str, e: Error) -> Error {
+        blame(&self.0.root, &self.1.key(key), e)
     }
 }

@@ -185,3 +185,60 @@ impl<'de> Visitor<'de> for RefVisitor {
         Ok(TextureRef::Inline(Box::new(spec)))
     }
 }
+
+/// The value of a number key that may vary over a surface (a roughness): a number, the
+/// name of a `[textures.NAME]` entry or a texture table in place. A number is held as
+/// the grey [`TextureRef::Color`] of it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScalarRef(pub TextureRef);
+
+impl From<f64> for ScalarRef {
+    fn from(x: f64) -> Self {
+        Self(TextureRef::Color([x; 3]))
+    }
+}
+
+impl Serialize for ScalarRef {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match &self.0 {
+            TextureRef::Color([x, y, z]) if x == y && y == z => s.serialize_f64(*x),
+            other => other.serialize(s),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for ScalarRef {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(ScalarVisitor)
+    }
+}
+
+struct ScalarVisitor;
+
+impl<'de> Visitor<'de> for ScalarVisitor {
+    type Value = ScalarRef;
+
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a number, a texture's name or a texture table")
+    }
+
+    fn visit_f64<E: de::Error>(self, x: f64) -> Result<ScalarRef, E> {
+        Ok(x.into())
+    }
+
+    fn visit_i64<E: de::Error>(self, x: i64) -> Result<ScalarRef, E> {
+        Ok((x as f64).into())
+    }
+
+    fn visit_u64<E: de::Error>(self, x: u64) -> Result<ScalarRef, E> {
+        Ok((x as f64).into())
+    }
+
+    fn visit_str<E: de::Error>(self, name: &str) -> Result<ScalarRef, E> {
+        RefVisitor.visit_str(name).map(ScalarRef)
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<ScalarRef, A::Error> {
+        RefVisitor.visit_map(map).map(ScalarRef)
+    }
+}

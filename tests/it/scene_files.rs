@@ -288,7 +288,8 @@ proptest! {
 #[test]
 fn the_format_documents_example_parses() {
     let doc = include_str!("../../docs/SCENE_FORMAT.md");
-    let (_, rest) = doc.split_once("```toml\n").unwrap();
+    let (_, example) = doc.split_once("\n## Example\n").unwrap();
+    let (_, rest) = example.split_once("```toml\n").unwrap();
     let (example, _) = rest.split_once("```").unwrap();
     let file = SceneFile::parse(example, Path::new("docs/example.toml")).unwrap();
     assert_eq!(

@@ -8,7 +8,9 @@
 // Each test binary includes this module and uses only part of it.
 #![allow(dead_code)]
 
+pub mod bsdf;
 pub mod draws;
+pub mod sphere_chi2;
 
 use proptest::prelude::*;
 use proptest::test_runner::{FileFailurePersistence, RngSeed, TestRunner};
