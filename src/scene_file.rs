@@ -35,6 +35,7 @@ mod build;
 mod camera;
 mod check;
 mod integer;
+mod light;
 mod location;
 mod make;
 mod model;
@@ -44,9 +45,10 @@ mod warnings;
 
 pub use build::{Built, Summary};
 pub use camera::FileCamera;
+pub use light::LightSpec;
 pub use model::{
-    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
-    RenderOptions, Scale, Triple,
+    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, ObjectSpec, RenderOptions, Scale,
+    Triple,
 };
 pub use transform::Placement;
 pub use warnings::Warning;
@@ -76,7 +78,7 @@ pub struct SceneFile {
     /// `[[objects]]`, in the order they are added to the scene.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub objects: Vec<ObjectSpec>,
-    /// `[[lights]]`: point lights.
+    /// `[[lights]]`: point, spot and directional lights.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub lights: Vec<LightSpec>,
     /// Where the file is: for messages and for mesh paths relative to its folder.

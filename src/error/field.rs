@@ -43,8 +43,16 @@ pub enum Field {
     EmissiveAlbedo,
     /// [`PointLight::new`](crate::PointLight::new)'s position.
     LightPosition,
-    /// [`PointLight::new`](crate::PointLight::new)'s intensity.
+    /// [`PointLight::new`](crate::PointLight::new)'s (and [`SpotLight::new`](crate::light::SpotLight::new)'s) intensity.
     LightIntensity,
+    /// [`SpotLight::new`](crate::light::SpotLight::new)'s and [`DirectionalLight::new`](crate::light::DirectionalLight::new)'s direction.
+    LightDirection,
+    /// [`DirectionalLight::new`](crate::light::DirectionalLight::new)'s irradiance.
+    LightIrradiance,
+    /// [`SpotLight::new`](crate::light::SpotLight::new)'s cutoff angle.
+    SpotCutoff,
+    /// [`SpotLight::new`](crate::light::SpotLight::new)'s beam width.
+    SpotBeamWidth,
     /// [`Background::solid`](crate::Background::solid)'s colour.
     BackgroundColor,
     /// [`Background::sky`](crate::Background::sky)'s colour straight down.
@@ -61,6 +69,10 @@ pub enum Field {
     CameraUp,
     /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s vertical field of view.
     CameraVfov,
+    /// [`LookAtCamera::with_lens`](crate::LookAtCamera::with_lens)'s aperture radius.
+    CameraAperture,
+    /// [`LookAtCamera::with_lens`](crate::LookAtCamera::with_lens)'s focus distance.
+    CameraFocusDistance,
     /// [`ScreenCamera::translated`](crate::ScreenCamera::translated)'s eye.
     CameraEye,
     /// An image width one camera cannot take ([`ScreenCamera::with_width`](crate::ScreenCamera::with_width): odd, or below 4).
@@ -105,6 +117,10 @@ impl Field {
             Self::EmissiveAlbedo => "emissive albedo",
             Self::LightPosition => "light position",
             Self::LightIntensity => "light intensity",
+            Self::LightDirection => "light direction",
+            Self::LightIrradiance => "light irradiance",
+            Self::SpotCutoff => "spot light cutoff angle",
+            Self::SpotBeamWidth => "spot light beam width",
             Self::BackgroundColor => "background colour",
             Self::SkyHorizon => "sky horizon colour",
             Self::SkyZenith => "sky zenith colour",
@@ -113,6 +129,8 @@ impl Field {
             Self::CameraView => "camera view direction (from − at)",
             Self::CameraUp => "camera up vector",
             Self::CameraVfov => "camera field of view",
+            Self::CameraAperture => "camera aperture radius",
+            Self::CameraFocusDistance => "camera focus distance",
             Self::CameraEye => "camera eye",
             Self::ImageWidth => "image width",
             Self::ImageSize => "image size",

@@ -42,7 +42,7 @@ pub struct Summary {
     pub triangles: usize,
     /// Mesh objects.
     pub meshes: usize,
-    /// Point lights.
+    /// Lights (point, spot, directional).
     pub lights: usize,
     /// Objects that give off light (of an emissive material).
     pub emitters: usize,
@@ -136,6 +136,8 @@ fn camera<F: Float>(root: &KeyPath, spec: &CameraSpec, width: usize) -> Result<F
             up,
             vfov,
             aspect,
+            aperture,
+            focus_distance,
         } => {
             let aspect = rule::positive(aspect).map_err(|why| at.key("aspect").error(why))?;
             let height = look_at_height(width, aspect);
@@ -145,6 +147,8 @@ fn camera<F: Float>(root: &KeyPath, spec: &CameraSpec, width: usize) -> Result<F
                 at: target,
                 up,
                 vfov,
+                aperture,
+                focus_distance,
                 size: (width, height as usize),
             };
             let mut made = checked::<F, _>(root, &at, make::look_at::<f64>(&spec), make::look_at::<F>(&spec));

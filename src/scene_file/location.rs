@@ -174,7 +174,7 @@ fn plain(message: &str) -> String {
         ("internally tagged enum MaterialSpec", "a table with a `type` key"),
         ("internally tagged enum ObjectSpec", "a table with a `type` key"),
         ("expected struct RenderOptions", "expected a table"),
-        ("expected struct LightSpec", "expected a table"),
+        ("expected struct LightFields", "expected a table"),
         ("expected variant identifier", "expected a string naming the type"),
         (
             "wanted string or table",

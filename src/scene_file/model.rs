@@ -83,7 +83,7 @@ pub enum CameraSpec {
         )]
         eye: Option<Triple>,
     },
-    /// A pinhole camera at `from` looking at `at`.
+    /// A camera at `from` looking at `at`: a pinhole, or with `aperture > 0` a thin lens.
     LookAt {
         /// The eye.
         #[serde(deserialize_with = "super::triple::deserialize")]
@@ -98,7 +98,18 @@ pub enum CameraSpec {
         vfov: f64,
         /// Width over height: the image is `width × ⌊width/aspect⌋` pixels.
         aspect: f64,
+        /// The lens radius, `≥ 0`; 0 (the default) is a pinhole.
+        #[serde(default, skip_serializing_if = "is_zero")]
+        aperture: f64,
+        /// The distance along the view axis that is sharp, `> 0` (default `|at − from|`).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        focus_distance: Option<f64>,
     },
+}
+
+/// Whether an optional number is at its default, 0 (`-0` is written: it reads back as `-0`).
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0 && x.is_sign_positive()
 }
 
 fn y_up() -> Triple {
@@ -303,16 +314,4 @@ impl Scale {
             Self::PerAxis(s) => s,
         }
     }
-}
-
-/// One `[[lights]]` entry: a point light.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LightSpec {
-    /// Where it is.
-    #[serde(deserialize_with = "super::triple::deserialize")]
-    pub position: Triple,
-    /// Its radiant intensity per channel, `≥ 0`.
-    #[serde(deserialize_with = "super::triple::deserialize")]
-    pub intensity: Triple,
 }

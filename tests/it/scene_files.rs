@@ -154,15 +154,21 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
             triple(-5.0..5.0),
             triple(-1.0..1.0),
             1.0..179.0f64,
-            0.1..10.0f64
+            0.1..10.0f64,
+            prop_oneof![Just(0.0), finite()],
+            proptest::option::of(finite())
         )
-            .prop_map(|(from, at, up, vfov, aspect)| CameraSpec::LookAt {
-                from,
-                at,
-                up,
-                vfov,
-                aspect
-            }),
+            .prop_map(
+                |(from, at, up, vfov, aspect, aperture, focus_distance)| CameraSpec::LookAt {
+                    from,
+                    at,
+                    up,
+                    vfov,
+                    aspect,
+                    aperture,
+                    focus_distance
+                }
+            ),
     ];
     let background = prop_oneof![
         (triple(0.0..2.0), triple(0.0..2.0))
@@ -222,8 +228,30 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
                 material
             }),
     ];
-    let light = (triple(-9.0..9.0), triple(0.0..50.0))
-        .prop_map(|(position, intensity)| LightSpec { position, intensity });
+    let light = prop_oneof![
+        (triple(-9.0..9.0), triple(0.0..50.0))
+            .prop_map(|(position, intensity)| LightSpec::Point { position, intensity }),
+        (
+            triple(-9.0..9.0),
+            triple(-1.0..1.0),
+            triple(0.0..50.0),
+            finite(),
+            proptest::option::of(finite())
+        )
+            .prop_map(
+                |(position, direction, intensity, cutoff_angle, beam_width)| LightSpec::Spot {
+                    position,
+                    direction,
+                    intensity,
+                    cutoff_angle,
+                    beam_width
+                }
+            ),
+        (triple(-1.0..1.0), triple(0.0..5.0)).prop_map(|(direction, irradiance)| LightSpec::Directional {
+            direction,
+            irradiance
+        }),
+    ];
     (
         render,
         camera,
