@@ -56,6 +56,7 @@ pub use warnings::Warning;
 use crate::advice::{Advice, Reason, advise};
 use crate::error::{Error, Result};
 use crate::float::Float;
+use crate::image::Tonemap;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -189,6 +190,18 @@ impl SceneFile {
     /// The `[render]` options, to override from a command line before [`SceneFile::build`].
     pub fn render_mut(&mut self) -> &mut RenderOptions {
         &mut self.render
+    }
+
+    /// The display formats' exposure and tone curve, `[render] exposure` and `tonemap`
+    /// (the float formats stay linear).
+    ///
+    /// # Errors
+    /// [`Error::SceneFile`] at `render.exposure` for an exposure outside
+    /// [`Tonemap::new`]'s range.
+    pub fn tonemap(&self) -> Result<Tonemap> {
+        let root = location::KeyPath::root(&self.path);
+        Tonemap::new(self.render.exposure, self.render.tonemap)
+            .map_err(|e| check::blame(&root, &root.key("render"), e))
     }
 
     /// Checks every value, loads the meshes and builds the scene, the camera and the

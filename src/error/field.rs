@@ -84,6 +84,8 @@ pub enum Field {
     SamplesPerPixel,
     /// [`RenderSettings`](crate::RenderSettings)' recursion limit.
     MaxDepth,
+    /// [`Tonemap::new`](crate::image::Tonemap::new)'s exposure.
+    Exposure,
     /// A parameter of a type outside the library (a user's own shape or material), named
     /// by its author: `Error::invalid("disk radius", …)` makes one.
     Custom(&'static str),
@@ -136,6 +138,7 @@ impl Field {
             Self::ImageSize => "image size",
             Self::SamplesPerPixel => "samples per pixel",
             Self::MaxDepth => "max depth",
+            Self::Exposure => "exposure",
             Self::Custom(name) => name,
         }
     }

@@ -10,6 +10,7 @@ use super::transform::Placement;
 use crate::aabb::Aabb;
 use crate::error::{Error, Field, Result};
 use crate::float::Float;
+use crate::image::Tonemap;
 use crate::material::MaterialKind;
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
@@ -27,6 +28,8 @@ pub struct Built<F> {
     pub camera: FileCamera<F>,
     /// Samples per pixel, depth and seed (no progress bar).
     pub settings: RenderSettings,
+    /// How the display formats (PNG, PPM) expose and tone map the image.
+    pub tonemap: Tonemap,
     /// What the scene holds.
     pub summary: Summary,
 }
@@ -63,6 +66,7 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
     let r = file.render();
     let settings =
         RenderSettings::new(r.spp, r.max_depth, r.seed).map_err(|e| blame(&root, &root.key("render"), e))?;
+    let tonemap = file.tonemap()?;
     let camera = camera::<F>(&root, &file.camera, r.width)?;
     let at = root.key("background");
     let background = checked::<F, _>(
@@ -105,6 +109,7 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
         scene,
         camera,
         settings,
+        tonemap,
         summary,
     })
 }

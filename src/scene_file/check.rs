@@ -59,6 +59,7 @@ pub fn key<'a>(root: &KeyPath<'a>, entry: &KeyPath<'a>, field: Field) -> KeyPath
         Field::ImageWidth | Field::ImageSize => render("width"),
         Field::SamplesPerPixel => render("spp"),
         Field::MaxDepth => render("max_depth"),
+        Field::Exposure => render("exposure"),
         // No file builds a user's own type; were one to, its entry is the place.
         Field::Custom(_) => entry.clone(),
     }

@@ -190,6 +190,7 @@ fn case(field: Field) -> Option<Case> {
         ),
         Field::SamplesPerPixel => ("[render]\nspp = 0\n".into(), false, "render.spp"),
         Field::MaxDepth => ("[render]\nmax_depth = 1001\n".into(), false, "render.max_depth"),
+        Field::Exposure => ("[render]\nexposure = -inf\n".into(), false, "render.exposure"),
         // A user's own type: no scene file builds one.
         Field::Custom(_) => return None,
     };
@@ -198,7 +199,7 @@ fn case(field: Field) -> Option<Case> {
 
 /// Every field, the user's own excepted. A field added to [`Field`] needs a case in the
 /// `match` above to compile, and belongs here too.
-const FIELDS: [Field; 36] = [
+const FIELDS: [Field; 37] = [
     Field::SphereCenter,
     Field::SphereRadius,
     Field::PlanePoint,
@@ -235,6 +236,7 @@ const FIELDS: [Field; 36] = [
     Field::ImageSize,
     Field::SamplesPerPixel,
     Field::MaxDepth,
+    Field::Exposure,
 ];
 
 /// The file's error: the key, the field and the message.

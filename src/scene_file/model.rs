@@ -3,6 +3,7 @@
 //! Only the shape and the types of values are checked here; their domains (a radius > 0,
 //! an albedo in `[0, 1]`, a material that exists) are checked when the scene is built.
 
+use crate::image::ToneCurve;
 use crate::scene::Acceleration;
 use serde::{Deserialize, Serialize};
 
@@ -28,10 +29,21 @@ pub struct RenderOptions {
     /// How the scene is intersected.
     #[serde(with = "AccelerationName")]
     pub acceleration: Acceleration,
+    /// Stops of exposure for the display formats (PNG, PPM): `+1` doubles every value
+    /// before the tone curve.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub exposure: f64,
+    /// The tone curve for the display formats.
+    #[serde(with = "ToneCurveName", default, skip_serializing_if = "is_no_curve")]
+    pub tonemap: ToneCurve,
 }
 
-/// 800 pixels wide, 1 sample per pixel, depth 10, seed 0, `f64`, automatic acceleration:
-/// the specification's minimum render.
+fn is_no_curve(c: &ToneCurve) -> bool {
+    *c == ToneCurve::None
+}
+
+/// 800 pixels wide, 1 sample per pixel, depth 10, seed 0, `f64`, automatic acceleration,
+/// no exposure change and no tone curve: the specification's minimum render.
 impl Default for RenderOptions {
     fn default() -> Self {
         Self {
@@ -41,8 +53,18 @@ impl Default for RenderOptions {
             seed: 0,
             precision: FilePrecision::F64,
             acceleration: Acceleration::Auto,
+            exposure: 0.0,
+            tonemap: ToneCurve::None,
         }
     }
+}
+
+/// The library's [`ToneCurve`] under the names the file uses.
+#[derive(Serialize, Deserialize)]
+#[serde(remote = "ToneCurve", rename_all = "lowercase")]
+enum ToneCurveName {
+    None,
+    Aces,
 }
 
 /// The scalar a scene file asks to be rendered in.

@@ -6,6 +6,7 @@ use crate::common;
 use crate::scenes;
 
 use proptest::prelude::*;
+use raytrace::image::ToneCurve;
 use raytrace::prelude::*;
 use raytrace::scene_file::{
     BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
@@ -137,16 +138,28 @@ fn finite() -> impl Strategy<Value = f64> {
 }
 
 fn any_file() -> impl Strategy<Value = SceneFile> {
-    let render = (1..5000usize, 1..100u32, 0..1000u32, any::<u64>(), 0..3u8, 0..3u8).prop_map(
-        |(width, spp, max_depth, seed, p, a)| RenderOptions {
-            width,
-            spp,
-            max_depth,
-            seed,
-            precision: [FilePrecision::F32, FilePrecision::F64, FilePrecision::Auto][p as usize],
-            acceleration: [Acceleration::Auto, Acceleration::Linear, Acceleration::Bvh][a as usize],
-        },
-    );
+    let render = (
+        1..5000usize,
+        1..100u32,
+        0..1000u32,
+        any::<u64>(),
+        0..3u8,
+        0..3u8,
+        prop_oneof![Just(0.0), finite()],
+        any::<bool>(),
+    )
+        .prop_map(
+            |(width, spp, max_depth, seed, p, a, exposure, aces)| RenderOptions {
+                width,
+                spp,
+                max_depth,
+                seed,
+                precision: [FilePrecision::F32, FilePrecision::F64, FilePrecision::Auto][p as usize],
+                acceleration: [Acceleration::Auto, Acceleration::Linear, Acceleration::Bvh][a as usize],
+                exposure,
+                tonemap: if aces { ToneCurve::Aces } else { ToneCurve::None },
+            },
+        );
     let camera = prop_oneof![
         proptest::option::of([finite(), finite(), finite()]).prop_map(|eye| CameraSpec::Screen { eye }),
         (
