@@ -85,6 +85,9 @@ pub struct SceneFile {
     /// Where the file is: for messages and for mesh paths relative to its folder.
     #[serde(skip)]
     path: PathBuf,
+    /// The text it was parsed from, to tell where a value refused later is written.
+    #[serde(skip)]
+    source: location::Source,
 }
 
 impl SceneFile {
@@ -119,6 +122,7 @@ impl SceneFile {
             location: "the whole file".into(),
             message,
             field: None,
+            line: None,
         };
         if bytes.len() as u64 > Self::MAX_BYTES {
             return Err(whole(format!(
@@ -136,6 +140,7 @@ impl SceneFile {
                 location: format!("line {line}, column {column}"),
                 message: "not UTF-8 text: a scene file is TOML".into(),
                 field: None,
+                line: None,
             }
         })?;
         Self::parse(&text, path)
@@ -151,6 +156,7 @@ impl SceneFile {
     pub fn parse(text: &str, path: &Path) -> Result<SceneFile> {
         let mut file: SceneFile = location::read(path, text)?;
         file.path = path.to_path_buf();
+        file.source = location::Source::new(text);
         Ok(file)
     }
 
@@ -182,6 +188,11 @@ impl SceneFile {
             .collect()
     }
 
+    /// The top of the file, where a value's error is reported from.
+    fn root(&self) -> location::KeyPath<'_> {
+        location::KeyPath::root(&self.path).in_text(self.source.text())
+    }
+
     /// The `[render]` options.
     pub fn render(&self) -> &RenderOptions {
         &self.render
@@ -199,7 +210,7 @@ impl SceneFile {
     /// [`Error::SceneFile`] at `render.exposure` for an exposure outside
     /// [`Tonemap::new`]'s range.
     pub fn tonemap(&self) -> Result<Tonemap> {
-        let root = location::KeyPath::root(&self.path);
+        let root = self.root();
         Tonemap::new(self.render.exposure, self.render.tonemap)
             .map_err(|e| check::blame(&root, &root.key("render"), e))
     }

@@ -62,7 +62,7 @@ pub struct Summary {
 
 /// Builds `file` in scalar `F`.
 pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
-    let root = KeyPath::root(file.path());
+    let root = file.root();
     let r = file.render();
     let settings =
         RenderSettings::new(r.spp, r.max_depth, r.seed).map_err(|e| blame(&root, &root.key("render"), e))?;

@@ -32,6 +32,7 @@ mod glass;
 mod interrupt;
 mod intersections;
 mod lambertian_chi2;
+mod light_files;
 mod lights;
 mod meshes;
 mod mis_unbiased;

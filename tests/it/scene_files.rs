@@ -383,7 +383,8 @@ fn auto_precision_picks_f64_for_a_scene_only_f64_holds_and_names_the_key() {
     assert_eq!(advice.recommended, raytrace::advice::Precision::F64);
     let why = advice.reason.to_string();
     assert!(
-        why.contains("cannot be built in f32") && why.contains("tiny.toml: objects[3].radius"),
+        why.contains("cannot be built in f32")
+            && why.contains("tiny.toml: line 61, column 10: objects[3].radius"),
         "{why}"
     );
 }
