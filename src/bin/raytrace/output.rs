@@ -204,8 +204,7 @@ impl Spinner {
 /// `raytrace merge`: reads the tiles, checks they make one image, writes it.
 pub fn merge(args: &MergeArgs) -> Result<()> {
     let format = choose_format(args.format, Some(&args.out), Format::Png)?;
-    let tonemap = Tonemap::new(args.exposure, args.tonemap.curve())
-        .map_err(|e| usage(&format!("--exposure {}: {e}", args.exposure)))?;
+    let tonemap = merge_tonemap(args).map_err(|e| usage(&e))?;
     let target = Target {
         path: args.out.clone(),
         format: Some(format),
@@ -310,9 +309,22 @@ pub fn check_usage(command: &Command) -> Result<(), String> {
             }
         }
         Command::Render(args) => format_for(args.format, args.out.as_deref(), Format::Png).map(drop),
-        Command::Merge(args) => format_for(args.format, Some(&args.out), Format::Png).map(drop),
+        Command::Merge(args) => {
+            merge_tonemap(args)?;
+            format_for(args.format, Some(&args.out), Format::Png).map(drop)
+        }
         _ => Ok(()),
     }
+}
+
+/// `raytrace merge`'s `--exposure` and `--tonemap`, or the usage error naming the option.
+fn merge_tonemap(args: &MergeArgs) -> Result<Tonemap, String> {
+    Tonemap::new(args.exposure, args.tonemap.curve()).map_err(|e| match e {
+        Error::InvalidValue { reason, .. } => {
+            format!("invalid value '{}' for '--exposure': {reason}", args.exposure)
+        }
+        other => other.to_string(),
+    })
 }
 
 /// `--format`, else the extension of `--out`, else `default`; a conflict is an error.
