@@ -85,7 +85,7 @@ impl Tonemap {
     /// # Errors
     /// An exposure that is not a finite number in `[−64, 64]` ([`Tonemap::MAX_STOPS`]).
     pub fn new(exposure: f64, curve: ToneCurve) -> Result<Self> {
-        if !(exposure.abs() <= Self::MAX_STOPS) {
+        if exposure.is_nan() || exposure.abs() > Self::MAX_STOPS {
             return Err(Error::invalid(
                 Field::Exposure,
                 format!(

@@ -119,14 +119,17 @@ impl<F: Float> SpotLight<F> {
     /// between, kept in `[0, 1]` where `acos` rounds past an edge.
     #[inline]
     pub fn falloff(&self, cos_theta: F) -> F {
-        if !(cos_theta > self.cos_cutoff) {
-            F::zero()
-        } else if cos_theta >= self.cos_beam {
-            F::one()
+        if cos_theta > self.cos_cutoff {
+            if cos_theta >= self.cos_beam {
+                F::one()
+            } else {
+                ((self.cutoff - cos_theta.acos()) * self.inv_transition)
+                    .max(F::zero())
+                    .min(F::one())
+            }
         } else {
-            ((self.cutoff - cos_theta.acos()) * self.inv_transition)
-                .max(F::zero())
-                .min(F::one())
+            // Past the cutoff, or NaN.
+            F::zero()
         }
     }
 
