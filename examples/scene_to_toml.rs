@@ -85,6 +85,8 @@ fn examples() -> raytrace::Result<Vec<Example>> {
                 up: [0.0, 1.0, 0.0],
                 vfov: 20.0,
                 aspect: 16.0 / 9.0,
+                aperture: 0.0,
+                focus_distance: None,
             },
             width: 400,
             spp: 10,
@@ -163,9 +165,22 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
         });
     }
     for l in e.scene.lights() {
-        file.lights.push(LightSpec {
-            position: l.position().to_f64(),
-            intensity: l.intensity().to_f64(),
+        file.lights.push(match l {
+            Light::Point(l) => LightSpec::Point {
+                position: l.position().to_f64(),
+                intensity: l.intensity().to_f64(),
+            },
+            Light::Spot(l) => LightSpec::Spot {
+                position: l.position().to_f64(),
+                direction: l.direction().to_f64(),
+                intensity: l.intensity().to_f64(),
+                cutoff_angle: l.cutoff_angle(),
+                beam_width: Some(l.beam_width()),
+            },
+            Light::Directional(l) => LightSpec::Directional {
+                direction: l.direction().to_f64(),
+                irradiance: l.irradiance().to_f64(),
+            },
         });
     }
     Ok(file)

@@ -33,13 +33,18 @@ pub enum Error {
     SceneFile {
         /// The scene file.
         path: PathBuf,
-        /// Where in it: `line 3, column 7`, or a field's path such as `objects[3].radius`.
+        /// Where in it: `line 3, column 7`, or a field's path such as `objects[3].radius`
+        /// (then `line` says where that value is written).
         location: String,
         /// What is wrong there.
         message: String,
         /// The library's field behind the error, when a constructor (or its check) refused
         /// a value: how a caller tells which value it was without reading `location`.
         field: Option<Field>,
+        /// Where the value is written, `(line, column)` (1-based, columns in characters),
+        /// when `location` is a field's path and the file's text is known: an invalid value
+        /// found as the scene is built.
+        line: Option<(usize, usize)>,
     },
     /// A mesh file that cannot be loaded.
     Mesh {
@@ -79,6 +84,17 @@ impl fmt::Display for Error {
             Self::InvalidSettings(reason) => write!(f, "invalid render settings: {reason}"),
             Self::Io { path, source } => write!(f, "{}: {source}", path.display()),
             Self::Ppm(reason) => write!(f, "malformed PPM: {reason}"),
+            Self::SceneFile {
+                path,
+                location,
+                message,
+                line: Some((line, column)),
+                ..
+            } => write!(
+                f,
+                "{}: line {line}, column {column}: {location}: {message}",
+                path.display()
+            ),
             Self::SceneFile {
                 path,
                 location,

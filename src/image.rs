@@ -1,5 +1,6 @@
 //! Images: the linear RGB buffer a render produces, its 16-bit encoding, the files it is
-//! written to (PPM and PNG for viewing, PFM and OpenEXR keeping linear values above 1),
+//! written to (PPM and PNG for viewing, exposed and tone mapped if asked, PFM and OpenEXR
+//! keeping linear values above 1),
 //! and the tile files a render split across processes is merged from. Every file is
 //! written atomically ([`write_atomic`]'s rules for links, devices and FIFOs); each format
 //! also has a `write_*_to` form that encodes into any writer (a pipe, standard output).
@@ -12,6 +13,7 @@ mod png;
 mod ppm;
 mod rect;
 mod tile;
+mod tonemap;
 
 pub use self::exr::{write_exr, write_exr_to};
 pub use atomic::write_atomic;
@@ -21,6 +23,7 @@ pub use png::{write_png, write_png_to};
 pub use ppm::{parse_ppm, read_ppm, write_ppm, write_ppm_to};
 pub use rect::Rect;
 pub use tile::{TileHeader, check_tile, merge_tiles, parse_tile, read_tile, write_tile, write_tile_to};
+pub use tonemap::{ToneCurve, Tonemap, aces_narkowicz};
 
 use crate::error::{Error, Result};
 
@@ -114,6 +117,14 @@ impl Image {
     /// The 16-bit samples of this image under `encoding` (see [`Encoding::quantize`]).
     #[must_use]
     pub fn to_u16(&self, encoding: Encoding) -> Image16 {
+        self.to_u16_tonemapped(Tonemap::NONE, encoding)
+    }
+
+    /// The 16-bit samples of this image exposed and tone mapped by `tonemap`, then encoded:
+    /// `quantize(encoding, tonemap(c))` per channel. With [`Tonemap::NONE`] the samples of
+    /// [`Image::to_u16`].
+    #[must_use]
+    pub fn to_u16_tonemapped(&self, tonemap: Tonemap, encoding: Encoding) -> Image16 {
         Image16 {
             width: self.width,
             height: self.height,
@@ -121,7 +132,7 @@ impl Image {
             samples: self
                 .pixels
                 .iter()
-                .flat_map(|p| p.map(|c| encoding.quantize(c)))
+                .flat_map(|p| p.map(|c| encoding.quantize(tonemap.apply(c))))
                 .collect(),
         }
     }

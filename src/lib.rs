@@ -64,7 +64,7 @@ pub use double_double::DoubleDouble;
 pub use error::{Error, Result};
 pub use float::{Float, lit};
 pub use image::{Encoding, Image, Image16};
-pub use light::PointLight;
+pub use light::{DirectionalLight, Light, PointLight, SpotLight};
 pub use material::{
     BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, MaterialKind, Mirror,
     Scatter, SharedMaterial,
@@ -86,9 +86,9 @@ pub use rand;
 pub mod prelude {
     pub use crate::image::{read_ppm, write_png, write_ppm};
     pub use crate::{
-        Background, Camera, Color, Dielectric, DynScene, Emissive, Encoding, EnumScene, Error, Float,
-        Hittable, Lambertian, Layout, LightSampling, LookAtCamera, Material, MaterialKind, Mesh, Mirror,
-        Plane, PointLight, Ray, Rect, RenderSettings, Renderer, Scatter, Scene, ScreenCamera, ShapeKind,
-        Sphere, Triangle, Vec3, lit, render,
+        Background, Camera, Color, Dielectric, DirectionalLight, DynScene, Emissive, Encoding, EnumScene,
+        Error, Float, Hittable, Lambertian, Layout, Light, LightSampling, LookAtCamera, Material,
+        MaterialKind, Mesh, Mirror, Plane, PointLight, Ray, Rect, RenderSettings, Renderer, Scatter, Scene,
+        ScreenCamera, ShapeKind, Sphere, SpotLight, Triangle, Vec3, lit, render,
     };
 }

@@ -153,6 +153,27 @@ pub fn cosine_hemisphere(u: [f64; 2]) -> [f64; 3] {
     [r * cos_p, r * sin_p, (1.0 - u[0]).sqrt()]
 }
 
+/// A uniform point of the unit disk from `u ∈ [0, 1)²` by Shirley and Chiu's concentric
+/// map (1997), which keeps neighbouring `u` neighbours on the disk: with `a = 2u₀ − 1`,
+/// `b = 2u₁ − 1`, `(r, φ) = (a, π/4·b/a)` where `|a| > |b|`, else `(b, π/2 − π/4·a/b)`;
+/// the point is `(r cos φ, r sin φ)`, the centre for `a = b = 0`. Each square ring maps
+/// onto the disk's ring of the same relative area, so the density is uniform, `1/π`.
+#[inline]
+pub fn uniform_disk_concentric(u: [f64; 2]) -> [f64; 2] {
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
+    let (a, b) = (2.0 * u[0] - 1.0, 2.0 * u[1] - 1.0);
+    if a == 0.0 && b == 0.0 {
+        return [0.0, 0.0];
+    }
+    let (r, phi) = if a.abs() > b.abs() {
+        (a, FRAC_PI_4 * (b / a))
+    } else {
+        (b, FRAC_PI_2 - FRAC_PI_4 * (a / b))
+    };
+    let (sin_p, cos_p) = phi.sin_cos();
+    [r * cos_p, r * sin_p]
+}
+
 /// The offset of a jittered sample inside its pixel: a uniform point of
 /// `[−½, ½)²`, in pixel units.
 #[inline]
@@ -226,6 +247,31 @@ mod tests {
             assert!(((x * x + y * y + z * z) - 1.0).abs() < 4.0 * f64::EPSILON);
         }
         assert_eq!(uniform_triangle([0.0, 0.0]), [0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn concentric_disk_points_are_uniform_on_the_disk() {
+        assert_eq!(uniform_disk_concentric([0.5, 0.5]), [0.0, 0.0]);
+        // The square's edge is the circle; its corners and mid-edges land where expected.
+        let [x, y] = uniform_disk_concentric([1.0, 0.5]);
+        assert!((x - 1.0).abs() < 1e-15 && y.abs() < 1e-15);
+        let [x, y] = uniform_disk_concentric([1.0, 1.0]);
+        assert!((x - y).abs() < 1e-15 && (x.hypot(y) - 1.0).abs() < 1e-15);
+        // Area fractions: r < ½ holds a quarter of the disk, each quadrant a quarter.
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(11);
+        let n = 40_000;
+        let (mut inner, mut first_quadrant) = (0, 0);
+        for _ in 0..n {
+            let [x, y] = uniform_disk_concentric([uniform(&mut rng), uniform(&mut rng)]);
+            let r = x.hypot(y);
+            assert!(r <= 1.0 + 1e-15);
+            inner += usize::from(r < 0.5);
+            first_quadrant += usize::from(x > 0.0 && y > 0.0);
+        }
+        // 5σ of a binomial with p = ¼: 5·√(n·p·(1 − p)) ≈ 433.
+        for count in [inner, first_quadrant] {
+            assert!((count as f64 - n as f64 / 4.0).abs() < 433.0, "{count}");
+        }
     }
 
     #[test]

@@ -1,4 +1,5 @@
-//! A scene: objects (a shape with its material), point lights and a background.
+//! A scene: objects (a shape with its material), lights (point, spot, directional) and a
+//! background.
 
 mod index;
 mod layout;
@@ -6,7 +7,7 @@ mod plain;
 
 use crate::background::Background;
 use crate::float::Float;
-use crate::light::{Emitters, PointLight};
+use crate::light::{Emitters, Light};
 use crate::material::{Material, MaterialKind, SharedMaterial};
 use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, ShapeKind};
@@ -40,7 +41,7 @@ pub struct Object<S, M> {
 #[derive(Clone, Debug)]
 pub struct Scene<F, S, M> {
     objects: Vec<Object<S, M>>,
-    lights: Vec<PointLight<F>>,
+    lights: Vec<Light<F>>,
     background: Background<F>,
     background_sampled: bool,
     acceleration: Acceleration,
@@ -156,9 +157,11 @@ impl<F: Float, S, M> Scene<F, S, M> {
         self
     }
 
-    /// Adds a point light.
-    pub fn add_light(&mut self, light: PointLight<F>) -> &mut Self {
-        self.lights.push(light);
+    /// Adds a light: a [`PointLight`](crate::PointLight), a
+    /// [`SpotLight`](crate::light::SpotLight), a
+    /// [`DirectionalLight`](crate::light::DirectionalLight) or a [`Light`].
+    pub fn add_light(&mut self, light: impl Into<Light<F>>) -> &mut Self {
+        self.lights.push(light.into());
         self
     }
 
@@ -167,8 +170,8 @@ impl<F: Float, S, M> Scene<F, S, M> {
         &self.objects
     }
 
-    /// The point lights.
-    pub fn lights(&self) -> &[PointLight<F>] {
+    /// The lights, in the order added.
+    pub fn lights(&self) -> &[Light<F>] {
         &self.lights
     }
 
@@ -279,6 +282,7 @@ impl<F: Float> EnumScene<F> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::light::PointLight;
     use crate::material::{Dielectric, Mirror};
     use crate::shape::{Sphere, Triangle};
     use crate::vec3::Vec3;

@@ -36,6 +36,7 @@ mod build;
 mod camera;
 mod check;
 mod integer;
+mod light;
 mod location;
 mod make;
 mod make_bsdf;
@@ -52,9 +53,10 @@ pub use bsdf::{
 };
 pub use build::{Built, Summary};
 pub use camera::FileCamera;
+pub use light::LightSpec;
 pub use model::{
-    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
-    RenderOptions, Scale, Triple,
+    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, ObjectSpec, RenderOptions, Scale,
+    Triple,
 };
 pub use texture_spec::{TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
@@ -63,6 +65,7 @@ pub use warnings::Warning;
 use crate::advice::{Advice, Reason, advise};
 use crate::error::{Error, Result};
 use crate::float::Float;
+use crate::image::Tonemap;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -88,12 +91,15 @@ pub struct SceneFile {
     /// `[[objects]]`, in the order they are added to the scene.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub objects: Vec<ObjectSpec>,
-    /// `[[lights]]`: point lights.
+    /// `[[lights]]`: point, spot and directional lights.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub lights: Vec<LightSpec>,
     /// Where the file is: for messages and for mesh paths relative to its folder.
     #[serde(skip)]
     path: PathBuf,
+    /// The text it was parsed from, to tell where a value refused later is written.
+    #[serde(skip)]
+    source: location::Source,
 }
 
 impl SceneFile {
@@ -128,6 +134,7 @@ impl SceneFile {
             location: "the whole file".into(),
             message,
             field: None,
+            line: None,
         };
         if bytes.len() as u64 > Self::MAX_BYTES {
             return Err(whole(format!(
@@ -145,6 +152,7 @@ impl SceneFile {
                 location: format!("line {line}, column {column}"),
                 message: "not UTF-8 text: a scene file is TOML".into(),
                 field: None,
+                line: None,
             }
         })?;
         Self::parse(&text, path)
@@ -160,6 +168,7 @@ impl SceneFile {
     pub fn parse(text: &str, path: &Path) -> Result<SceneFile> {
         let mut file: SceneFile = location::read(path, text)?;
         file.path = path.to_path_buf();
+        file.source = location::Source::new(text);
         Ok(file)
     }
 
@@ -219,6 +228,11 @@ impl SceneFile {
         files
     }
 
+    /// The top of the file, where a value's error is reported from.
+    fn root(&self) -> location::KeyPath<'_> {
+        location::KeyPath::root(&self.path).in_text(self.source.text())
+    }
+
     /// The `[render]` options.
     pub fn render(&self) -> &RenderOptions {
         &self.render
@@ -227,6 +241,18 @@ impl SceneFile {
     /// The `[render]` options, to override from a command line before [`SceneFile::build`].
     pub fn render_mut(&mut self) -> &mut RenderOptions {
         &mut self.render
+    }
+
+    /// The display formats' exposure and tone curve, `[render] exposure` and `tonemap`
+    /// (the float formats stay linear).
+    ///
+    /// # Errors
+    /// [`Error::SceneFile`] at `render.exposure` for an exposure outside
+    /// [`Tonemap::new`]'s range.
+    pub fn tonemap(&self) -> Result<Tonemap> {
+        let root = self.root();
+        Tonemap::new(self.render.exposure, self.render.tonemap)
+            .map_err(|e| check::blame(&root, &root.key("render"), e))
     }
 
     /// Checks every value, loads the meshes and builds the scene, the camera and the

@@ -77,8 +77,16 @@ pub enum Field {
     TwoSidedBack,
     /// [`PointLight::new`](crate::PointLight::new)'s position.
     LightPosition,
-    /// [`PointLight::new`](crate::PointLight::new)'s intensity.
+    /// [`PointLight::new`](crate::PointLight::new)'s (and [`SpotLight::new`](crate::light::SpotLight::new)'s) intensity.
     LightIntensity,
+    /// [`SpotLight::new`](crate::light::SpotLight::new)'s and [`DirectionalLight::new`](crate::light::DirectionalLight::new)'s direction.
+    LightDirection,
+    /// [`DirectionalLight::new`](crate::light::DirectionalLight::new)'s irradiance.
+    LightIrradiance,
+    /// [`SpotLight::new`](crate::light::SpotLight::new)'s cutoff angle.
+    SpotCutoff,
+    /// [`SpotLight::new`](crate::light::SpotLight::new)'s beam width.
+    SpotBeamWidth,
     /// [`Background::solid`](crate::Background::solid)'s colour.
     BackgroundColor,
     /// [`Background::sky`](crate::Background::sky)'s colour straight down.
@@ -103,6 +111,10 @@ pub enum Field {
     CameraUp,
     /// [`LookAtCamera::new`](crate::LookAtCamera::new)'s vertical field of view.
     CameraVfov,
+    /// [`LookAtCamera::with_lens`](crate::LookAtCamera::with_lens)'s aperture radius.
+    CameraAperture,
+    /// [`LookAtCamera::with_lens`](crate::LookAtCamera::with_lens)'s focus distance.
+    CameraFocusDistance,
     /// [`ScreenCamera::translated`](crate::ScreenCamera::translated)'s eye.
     CameraEye,
     /// An image width one camera cannot take ([`ScreenCamera::with_width`](crate::ScreenCamera::with_width): odd, or below 4).
@@ -114,6 +126,8 @@ pub enum Field {
     SamplesPerPixel,
     /// [`RenderSettings`](crate::RenderSettings)' recursion limit.
     MaxDepth,
+    /// [`Tonemap::new`](crate::image::Tonemap::new)'s exposure.
+    Exposure,
     /// A parameter of a type outside the library (a user's own shape or material), named
     /// by its author: `Error::invalid("disk radius", …)` makes one.
     Custom(&'static str),
@@ -164,6 +178,10 @@ impl Field {
             Self::TwoSidedBack => "two-sided back material",
             Self::LightPosition => "light position",
             Self::LightIntensity => "light intensity",
+            Self::LightDirection => "light direction",
+            Self::LightIrradiance => "light irradiance",
+            Self::SpotCutoff => "spot light cutoff angle",
+            Self::SpotBeamWidth => "spot light beam width",
             Self::BackgroundColor => "background colour",
             Self::SkyHorizon => "sky horizon colour",
             Self::SkyZenith => "sky zenith colour",
@@ -176,11 +194,14 @@ impl Field {
             Self::CameraView => "camera view direction (from − at)",
             Self::CameraUp => "camera up vector",
             Self::CameraVfov => "camera field of view",
+            Self::CameraAperture => "camera aperture radius",
+            Self::CameraFocusDistance => "camera focus distance",
             Self::CameraEye => "camera eye",
             Self::ImageWidth => "image width",
             Self::ImageSize => "image size",
             Self::SamplesPerPixel => "samples per pixel",
             Self::MaxDepth => "max depth",
+            Self::Exposure => "exposure",
             Self::Custom(name) => name,
         }
     }

@@ -1,10 +1,10 @@
-//! Direct light at a surface with a non-delta lobe: from every point light, and from one
-//! sampled emitter (next-event estimation), each through the material's
-//! [`eval`](Material::eval).
+//! Direct light at a surface with a non-delta lobe: from every delta light (point, spot,
+//! directional), and from one sampled emitter (next-event estimation), each through the
+//! material's [`eval`](Material::eval).
 
 use super::trace::Tracer;
 use crate::float::Float;
-use crate::light::{Emitters, power_heuristic};
+use crate::light::{Emitters, Incident, power_heuristic};
 use crate::material::{Lobes, Material, Scatter};
 use crate::ray::Ray;
 use crate::sampling::uniform;
@@ -14,10 +14,12 @@ use crate::vec3::{Color, Vec3};
 use rand::Rng;
 
 impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
-    /// Light arriving straight from the point lights at `hit`, seen from `wo`:
-    /// `Σ f(wo, wi)·|cos θᵢ| · I/d²` over the lights a shadow ray reaches unblocked,
-    /// computed as `(colour ∘ I)·(scale/d²)` from the material's [`Eval`](crate::material::Eval)
-    /// (for the Lambertian `(A/π ∘ I)·(cos θ/d²)`, the specification's extra).
+    /// Light arriving straight from the scene's lights at `hit`, seen from `wo`:
+    /// `Σ f(wo, wi)·|cos θᵢ| · I/d²` over the lights a shadow ray reaches unblocked, each
+    /// light's [`Incident`] giving `wi`, the shadow ray's length and `I/d²` (`E/1` for a
+    /// light at infinity), computed as `(colour ∘ I)·(scale/d²)` from the material's
+    /// [`Eval`](crate::material::Eval) (for the Lambertian `(A/π ∘ I)·(cos θ/d²)`, the
+    /// specification's extra).
     pub(super) fn direct_light(&mut self, hit: &Hit<F>, material: &M, wo: Vec3<F>) -> Color<F> {
         let mut sum = Color::zero();
         // Shadow rays leave on the normal's side; a light on the other side (seen through
@@ -25,7 +27,16 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         let above = hit.offset_origin(hit.normal);
         let transmits = material.lobes().contains(Lobes::TRANSMISSION);
         for light in self.scene.lights() {
-            let Some((origin, dir, dist2)) = toward(hit, above, light.position(), transmits) else {
+            let Some((
+                origin,
+                Incident {
+                    direction: dir,
+                    distance,
+                    intensity,
+                    falloff,
+                },
+            )) = toward(hit, above, transmits, |x| light.incident(x), |i| i.direction)
+            else {
                 continue;
             };
             if !hit.sides_agree(dir) {
@@ -35,8 +46,8 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
                 continue;
             };
             self.rays += 1;
-            if !self.scene.occluded(&Ray::new(origin, dir), dist2.sqrt()) {
-                sum = sum + f.colour * light.intensity() * (f.scale / dist2);
+            if !self.scene.occluded(&Ray::new(origin, dir), distance) {
+                sum = sum + f.colour * intensity * (f.scale / falloff);
             }
         }
         sum
@@ -85,7 +96,8 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
             return Color::zero();
         };
         let transmits = material.lobes().contains(Lobes::TRANSMISSION);
-        let Some((origin, dir, _)) = toward(&hit, above, sample.point, transmits) else {
+        let aim = |x| crate::light::aim(x, sample.point).map(|(dir, _)| dir);
+        let Some((origin, dir)) = toward(&hit, above, transmits, aim, |&dir| dir) else {
             return Color::zero();
         };
         let radiance = emission.toward(dir.dot(sample.normal) < F::zero());
@@ -147,36 +159,29 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     }
 }
 
-/// The origin, unit direction and squared distance of a shadow ray from `hit` to
-/// `target`: from `above` (the origin offset to the normal's side) when the target lies
-/// on that side, else, for a material that `transmits`, from an origin offset to the
-/// other side ([`from_below`]). `None` if the target is the origin or no light can come
-/// from it.
+/// The origin of a shadow ray from `hit` and what `aim` finds from there (its direction
+/// read by `direction`): from `above` (the origin offset to the normal's side) when the
+/// direction found from it lies on that side, else, for a material that `transmits`, from
+/// an origin offset to the other side, aimed again. `None` if `aim` finds nothing, or no
+/// light can come from where it points.
 #[inline(always)]
-fn toward<F: Float>(
+fn toward<F: Float, T>(
     hit: &Hit<F>,
     above: Vec3<F>,
-    target: Vec3<F>,
     transmits: bool,
-) -> Option<(Vec3<F>, Vec3<F>, F)> {
-    let to = target - above;
-    let dist2 = to.length_squared();
-    let dir = to.try_normalize()?;
+    aim: impl Fn(Vec3<F>) -> Option<T>,
+    direction: impl Fn(&T) -> Vec3<F>,
+) -> Option<(Vec3<F>, T)> {
+    let found = aim(above)?;
+    let dir = direction(&found);
     if dir.dot(hit.normal) >= F::zero() {
-        Some((above, dir, dist2))
+        Some((above, found))
     } else if transmits {
-        from_below(hit, dir, target)
+        // Always inlined: out of line the hit goes by reference, which keeps every hit in
+        // memory.
+        let below = hit.offset_origin(dir);
+        Some((below, aim(below)?))
     } else {
         None
     }
-}
-
-/// [`toward`] for a target behind the surface (seen through a transmitting lobe).
-// Always inlined: out of line it takes the hit by reference, which keeps every hit in
-// memory.
-#[inline(always)]
-fn from_below<F: Float>(hit: &Hit<F>, dir: Vec3<F>, target: Vec3<F>) -> Option<(Vec3<F>, Vec3<F>, F)> {
-    let below = hit.offset_origin(dir);
-    let to = target - below;
-    Some((below, to.try_normalize()?, to.length_squared()))
 }

@@ -12,7 +12,7 @@ use crate::float::{Float, lit};
 use crate::image::Image;
 use crate::material::Scatter;
 use crate::ray::Ray;
-use crate::sampling::pixel_jitter;
+use crate::sampling::{pixel_jitter, uniform};
 use crate::scene::Layout;
 use crate::scene::Scene;
 use crate::vec3::Color;
@@ -84,7 +84,12 @@ pub(super) fn sample_rng<R: SeedableRng>(stream: u64, sample: u32) -> R {
 }
 
 /// A sample's camera ray: with one sample per pixel through the pixel centre (the spec's
-/// basic mode), with more through a uniform random point of the pixel's cell.
+/// basic mode), with more through a uniform random point of the pixel's cell; from a
+/// uniform point of the lens for a camera that [has one](Camera::has_lens).
+///
+/// The sample's generator gives, in this order, the pixel jitter's two numbers (with more
+/// than one sample per pixel), then the lens's two (with a lens), then the path's: a
+/// pinhole camera draws exactly what it always has.
 #[inline]
 pub(super) fn camera_ray<F: Float, R: Rng + ?Sized>(
     camera: &impl Camera<F>,
@@ -94,11 +99,18 @@ pub(super) fn camera_ray<F: Float, R: Rng + ?Sized>(
     rng: &mut R,
 ) -> Ray<F> {
     let (x, y) = (lit::<F>(x as f64), lit::<F>(y as f64));
-    if spp == 1 {
-        return camera.ray(x, y);
+    let (x, y) = if spp == 1 {
+        (x, y)
+    } else {
+        let (dx, dy) = pixel_jitter(rng);
+        (x + lit(dx), y + lit(dy))
+    };
+    if camera.has_lens() {
+        let lens = [uniform(rng), uniform(rng)];
+        camera.ray_through_lens(x, y, lens)
+    } else {
+        camera.ray(x, y)
     }
-    let (dx, dy) = pixel_jitter(rng);
-    camera.ray(x + lit(dx), y + lit(dy))
 }
 
 /// A pixel's colour from the sum of its `spp` sample colours: their mean. Each sample is

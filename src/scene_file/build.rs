@@ -12,6 +12,7 @@ use crate::aabb::Aabb;
 use crate::background::EnvironmentMap;
 use crate::error::{Error, Field, Result};
 use crate::float::Float;
+use crate::image::Tonemap;
 use crate::material::{Material, MaterialKind};
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
@@ -30,6 +31,8 @@ pub struct Built<F> {
     pub camera: FileCamera<F>,
     /// Samples per pixel, depth and seed (no progress bar).
     pub settings: RenderSettings,
+    /// How the display formats (PNG, PPM) expose and tone map the image.
+    pub tonemap: Tonemap,
     /// What the scene holds.
     pub summary: Summary,
 }
@@ -48,7 +51,7 @@ pub struct Summary {
     /// Placements of shared meshes (their triangles count among the triangles, once per
     /// placement).
     pub instances: usize,
-    /// Point lights.
+    /// Lights (point, spot, directional).
     pub lights: usize,
     /// Objects that give off light (of an emissive material).
     pub emitters: usize,
@@ -65,10 +68,11 @@ pub struct Summary {
 
 /// Builds `file` in scalar `F`.
 pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
-    let root = KeyPath::root(file.path());
+    let root = file.root();
     let r = file.render();
     let settings =
         RenderSettings::new(r.spp, r.max_depth, r.seed).map_err(|e| blame(&root, &root.key("render"), e))?;
+    let tonemap = file.tonemap()?;
     let camera = camera::<F>(&root, &file.camera, r.width)?;
     let at = root.key("background");
     let folder = file.path().parent().unwrap_or(Path::new(""));
@@ -119,6 +123,7 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
         scene,
         camera,
         settings,
+        tonemap,
         summary,
     })
 }
@@ -152,6 +157,8 @@ fn camera<F: Float>(root: &KeyPath, spec: &CameraSpec, width: usize) -> Result<F
             up,
             vfov,
             aspect,
+            aperture,
+            focus_distance,
         } => {
             let aspect = rule::positive(aspect).map_err(|why| at.key("aspect").error(why))?;
             let height = look_at_height(width, aspect);
@@ -161,6 +168,8 @@ fn camera<F: Float>(root: &KeyPath, spec: &CameraSpec, width: usize) -> Result<F
                 at: target,
                 up,
                 vfov,
+                aperture,
+                focus_distance,
                 size: (width, height as usize),
             };
             let mut made = checked::<F, _>(root, &at, make::look_at::<f64>(&spec), make::look_at::<F>(&spec));

@@ -9,7 +9,7 @@ use crate::ray::Ray;
 pub enum FileCamera<F> {
     /// The specification's camera ([`ScreenCamera`]).
     Screen(ScreenCamera),
-    /// A pinhole camera anywhere ([`LookAtCamera`]).
+    /// A camera anywhere, a pinhole or a thin lens ([`LookAtCamera`]).
     LookAt(LookAtCamera<F>),
 }
 
@@ -31,6 +31,19 @@ impl<F: Float> Camera<F> for FileCamera<F> {
         match self {
             Self::Screen(c) => c.ray(x, y),
             Self::LookAt(c) => c.ray(x, y),
+        }
+    }
+    fn has_lens(&self) -> bool {
+        match self {
+            Self::Screen(c) => Camera::<F>::has_lens(c),
+            Self::LookAt(c) => c.has_lens(),
+        }
+    }
+    #[inline]
+    fn ray_through_lens(&self, x: F, y: F, lens: [f64; 2]) -> Ray<F> {
+        match self {
+            Self::Screen(c) => c.ray_through_lens(x, y, lens),
+            Self::LookAt(c) => c.ray_through_lens(x, y, lens),
         }
     }
 }

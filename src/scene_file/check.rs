@@ -57,6 +57,10 @@ pub fn key<'a>(root: &KeyPath<'a>, entry: &KeyPath<'a>, field: Field) -> KeyPath
         Field::TwoSidedBack => own("back"),
         Field::LightPosition => own("position"),
         Field::LightIntensity => own("intensity"),
+        Field::LightDirection => own("direction"),
+        Field::LightIrradiance => own("irradiance"),
+        Field::SpotCutoff => own("cutoff_angle"),
+        Field::SpotBeamWidth => own("beam_width"),
         Field::BackgroundColor => own("color"),
         Field::SkyHorizon => own("horizon"),
         Field::SkyZenith => own("zenith"),
@@ -69,11 +73,14 @@ pub fn key<'a>(root: &KeyPath<'a>, entry: &KeyPath<'a>, field: Field) -> KeyPath
         Field::CameraAt | Field::CameraView => own("at"),
         Field::CameraUp => own("up"),
         Field::CameraVfov => own("vfov"),
+        Field::CameraAperture => own("aperture"),
+        Field::CameraFocusDistance => own("focus_distance"),
         Field::CameraEye => own("eye"),
         // The camera makes the image's size from `[render] width`.
         Field::ImageWidth | Field::ImageSize => render("width"),
         Field::SamplesPerPixel => render("spp"),
         Field::MaxDepth => render("max_depth"),
+        Field::Exposure => render("exposure"),
         // No file builds a user's own type; were one to, its entry is the place.
         Field::Custom(_) => entry.clone(),
     }

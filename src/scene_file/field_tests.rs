@@ -6,6 +6,9 @@ use super::location::KeyPath;
 use super::*;
 use crate::error::Field;
 
+const SPOT: &str =
+    "[[lights]]\ntype = \"spot\"\nposition = [0, 2, 0]\ndirection = [0, -1, 0]\nintensity = [1, 1, 1]\n";
+
 const MATTE: &str = "[materials.m]\ntype = \"lambertian\"\nalbedo = [0.5, 0.5, 0.5]\n";
 
 /// A file that one constructor refuses, in `f64` unless `f32` is set: the field refused and
@@ -223,6 +226,26 @@ fn case(field: Field) -> Option<Case> {
             false,
             "lights[0].intensity",
         ),
+        Field::LightDirection => (
+            "[[lights]]\ntype = \"directional\"\ndirection = [0, -1e-50, 0]\nirradiance = [1, 1, 1]\n".into(),
+            true,
+            "lights[0].direction",
+        ),
+        Field::LightIrradiance => (
+            "[[lights]]\ntype = \"directional\"\ndirection = [0, -1, 0]\nirradiance = [nan, 1, 1]\n".into(),
+            false,
+            "lights[0].irradiance",
+        ),
+        Field::SpotCutoff => (
+            format!("{SPOT}cutoff_angle = 91\n"),
+            false,
+            "lights[0].cutoff_angle",
+        ),
+        Field::SpotBeamWidth => (
+            format!("{SPOT}cutoff_angle = 30\nbeam_width = 40\n"),
+            false,
+            "lights[0].beam_width",
+        ),
         Field::BackgroundColor => (
             "[background]\ntype = \"solid\"\ncolor = [0, 0, -1]\n".into(),
             false,
@@ -261,6 +284,12 @@ fn case(field: Field) -> Option<Case> {
         Field::CameraView => (look_at("from = [1, 2, 3]\nat = [1, 2, 3]"), false, "camera.at"),
         Field::CameraUp => (look_at("up = [0, 0, -1]"), false, "camera.up"),
         Field::CameraVfov => (look_at("vfov = 180"), false, "camera.vfov"),
+        Field::CameraAperture => (look_at("aperture = -0.1"), false, "camera.aperture"),
+        Field::CameraFocusDistance => (
+            look_at("aperture = 0.1\nfocus_distance = 1e-50"),
+            true,
+            "camera.focus_distance",
+        ),
         Field::CameraEye => (
             "[camera]\ntype = \"screen\"\neye = [nan, 0, 0]\n".into(),
             false,
@@ -274,6 +303,7 @@ fn case(field: Field) -> Option<Case> {
         ),
         Field::SamplesPerPixel => ("[render]\nspp = 0\n".into(), false, "render.spp"),
         Field::MaxDepth => ("[render]\nmax_depth = 1001\n".into(), false, "render.max_depth"),
+        Field::Exposure => ("[render]\nexposure = -inf\n".into(), false, "render.exposure"),
         // A user's own type: no scene file builds one.
         Field::Custom(_) => return None,
     };
@@ -294,7 +324,7 @@ fn small_map() -> &'static Path {
 /// Every field but those no scene file can get wrong (a user's own, a rotation matrix). A
 /// field added to [`Field`] needs a case in the `match` above to compile, and belongs here
 /// too.
-const FIELDS: [Field; 49] = [
+const FIELDS: [Field; 56] = [
     Field::SphereCenter,
     Field::SphereRadius,
     Field::PlanePoint,
@@ -329,6 +359,10 @@ const FIELDS: [Field; 49] = [
     Field::TwoSidedBack,
     Field::LightPosition,
     Field::LightIntensity,
+    Field::LightDirection,
+    Field::LightIrradiance,
+    Field::SpotCutoff,
+    Field::SpotBeamWidth,
     Field::BackgroundColor,
     Field::SkyHorizon,
     Field::SkyZenith,
@@ -339,11 +373,14 @@ const FIELDS: [Field; 49] = [
     Field::CameraView,
     Field::CameraUp,
     Field::CameraVfov,
+    Field::CameraAperture,
+    Field::CameraFocusDistance,
     Field::CameraEye,
     Field::ImageWidth,
     Field::ImageSize,
     Field::SamplesPerPixel,
     Field::MaxDepth,
+    Field::Exposure,
 ];
 
 /// The file's error: the key, the field and the message.

@@ -6,6 +6,7 @@ use serde::Deserialize;
 use serde_path_to_error::Segment;
 use std::ops::Range;
 use std::path::Path;
+use std::sync::Arc;
 use toml::Spanned;
 use toml::de::{DeString, DeTable, DeValue};
 
@@ -158,6 +159,7 @@ fn error_at(file: &Path, text: &str, span: Option<Range<usize>>, message: &str, 
         location,
         message,
         field: None,
+        line: None,
     }
 }
 
@@ -175,7 +177,7 @@ fn plain(message: &str) -> String {
         ("internally tagged enum ObjectSpec", "a table with a `type` key"),
         ("internally tagged enum TextureSpec", "a table with a `type` key"),
         ("expected struct RenderOptions", "expected a table"),
-        ("expected struct LightSpec", "expected a table"),
+        ("expected struct LightFields", "expected a table"),
         ("expected variant identifier", "expected a string naming the type"),
         (
             "wanted string or table",
@@ -220,11 +222,46 @@ fn path_text(at: &[Step]) -> String {
     text
 }
 
-/// A key's path such as `objects[3].radius`, built up as the builder walks the file.
+/// The text a scene file was parsed from, kept to find where a value is written when it
+/// is refused. It is not part of the file's value: two files equal in every section are
+/// equal whatever text they came from.
+#[derive(Clone, Default)]
+pub struct Source(Option<Arc<str>>);
+
+impl Source {
+    /// The text `text`.
+    pub fn new(text: &str) -> Self {
+        Self(Some(text.into()))
+    }
+
+    /// The text, if the file was parsed from one (not built in code).
+    pub fn text(&self) -> Option<&str> {
+        self.0.as_deref()
+    }
+}
+
+impl PartialEq for Source {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+/// Not the text (up to 64 MiB), and nothing that tells two texts apart: as for equality,
+/// the source is not part of the file's value.
+impl std::fmt::Debug for Source {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Source(..)")
+    }
+}
+
+/// A key's path such as `objects[3].radius`, built up as the builder walks the file, with
+/// the file's text (if known) to say on which line its value is.
 #[derive(Clone, Debug)]
 pub struct KeyPath<'a> {
     file: &'a Path,
     path: String,
+    steps: Vec<Step>,
+    text: Option<&'a str>,
 }
 
 impl<'a> KeyPath<'a> {
@@ -233,7 +270,15 @@ impl<'a> KeyPath<'a> {
         Self {
             file,
             path: String::new(),
+            steps: Vec::new(),
+            text: None,
         }
+    }
+
+    /// The same path in a file whose text is `text`: its errors also say where the value
+    /// (or, for one not written, the nearest table around it) is.
+    pub fn in_text(self, text: Option<&'a str>) -> Self {
+        Self { text, ..self }
     }
 
     /// The key `name` below this one.
@@ -243,18 +288,36 @@ impl<'a> KeyPath<'a> {
         } else {
             format!("{}.{name}", self.path)
         };
-        Self {
-            file: self.file,
-            path,
-        }
+        self.down(path, Step::Key(name.to_string()))
     }
 
     /// Entry `i` of the array at this key.
     pub fn index(&self, i: usize) -> Self {
+        self.down(format!("{}[{i}]", self.path), Step::Index(i))
+    }
+
+    fn down(&self, path: String, step: Step) -> Self {
+        let mut steps = self.steps.clone();
+        steps.push(step);
         Self {
             file: self.file,
-            path: format!("{}[{i}]", self.path),
+            path,
+            steps,
+            text: self.text,
         }
+    }
+
+    /// The line and column of this key's value in the text, or of the nearest table
+    /// around it that is written (a key left at its default has no line of its own);
+    /// `None` without a text, or at the top of the file.
+    fn line(&self) -> Option<(usize, usize)> {
+        let text = self.text?;
+        let doc = DeTable::parse(text).ok()?;
+        let doc = Spanned::new(doc.span(), DeValue::Table(doc.into_inner()));
+        (1..=self.steps.len())
+            .rev()
+            .find_map(|n| lookup(&doc, &self.steps[..n]))
+            .map(|node| line_column(text, node.span().start))
     }
 
     /// An [`Error::SceneFile`] at this key.
@@ -269,6 +332,7 @@ impl<'a> KeyPath<'a> {
             location: self.path.clone(),
             message: message.into(),
             field,
+            line: self.line(),
         }
     }
 

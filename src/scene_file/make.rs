@@ -4,15 +4,16 @@
 
 use super::camera::FileCamera;
 use super::check::vec;
+use super::light::LightSpec;
 use super::make_bsdf;
-use super::model::{BackgroundSpec, FresnelSpec, LightSpec, MaterialSpec};
+use super::model::{BackgroundSpec, FresnelSpec, MaterialSpec};
 use super::resolve::{Inputs, TextureUse, Within};
 use super::transform::Placement;
 use crate::background::{Background, EnvironmentMap};
 use crate::camera::{LookAtCamera, ScreenCamera};
 use crate::error::Result;
 use crate::float::{Float, lit};
-use crate::light::PointLight;
+use crate::light::{DirectionalLight, Light, PointLight, SpotLight};
 use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, NormalMap, Reflectance};
 use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
 use crate::vec3::Vec3;
@@ -125,9 +126,32 @@ pub fn background<G: Float>(
     }
 }
 
-/// The point light in `G`.
-pub fn light<G: Float>(spec: &LightSpec) -> Result<PointLight<G>> {
-    PointLight::new(vec(spec.position), vec(spec.intensity))
+/// The light in `G`.
+pub fn light<G: Float>(spec: &LightSpec) -> Result<Light<G>> {
+    Ok(match *spec {
+        LightSpec::Point { position, intensity } => PointLight::new(vec(position), vec(intensity))?.into(),
+        LightSpec::Spot {
+            position,
+            direction,
+            intensity,
+            cutoff_angle,
+            beam_width,
+        } => {
+            let beam_width = beam_width.unwrap_or(LightSpec::default_beam_width(cutoff_angle));
+            SpotLight::new(
+                vec(position),
+                vec(direction),
+                vec(intensity),
+                lit(cutoff_angle),
+                lit(beam_width),
+            )?
+            .into()
+        }
+        LightSpec::Directional {
+            direction,
+            irradiance,
+        } => DirectionalLight::new(vec(direction), vec(irradiance))?.into(),
+    })
 }
 
 /// The spec's camera for an image `width` pixels wide, its eye moved to `eye`.
@@ -149,6 +173,10 @@ pub struct LookAt {
     pub up: [f64; 3],
     /// Vertical field of view, degrees.
     pub vfov: f64,
+    /// The lens radius (0: a pinhole).
+    pub aperture: f64,
+    /// The distance in focus, if not `|at − from|`.
+    pub focus_distance: Option<f64>,
     /// The image's size.
     pub size: (usize, usize),
 }
@@ -156,5 +184,7 @@ pub struct LookAt {
 /// The look-at camera in `G`.
 pub fn look_at<G: Float>(c: &LookAt) -> Result<FileCamera<G>> {
     let (width, height) = c.size;
-    LookAtCamera::new(vec(c.from), vec(c.at), vec(c.up), lit(c.vfov), width, height).map(FileCamera::LookAt)
+    LookAtCamera::new(vec(c.from), vec(c.at), vec(c.up), lit(c.vfov), width, height)?
+        .with_lens(lit(c.aperture), c.focus_distance.map(lit))
+        .map(FileCamera::LookAt)
 }

@@ -8,6 +8,7 @@ use super::bsdf::{
     ThinDielectricSpec, TwoSidedSpec,
 };
 use super::texture_spec::{ScalarRef, TextureRef};
+use crate::image::ToneCurve;
 use crate::scene::Acceleration;
 use serde::{Deserialize, Serialize};
 
@@ -33,10 +34,21 @@ pub struct RenderOptions {
     /// How the scene is intersected.
     #[serde(with = "AccelerationName")]
     pub acceleration: Acceleration,
+    /// Stops of exposure for the display formats (PNG, PPM): `+1` doubles every value
+    /// before the tone curve.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub exposure: f64,
+    /// The tone curve for the display formats.
+    #[serde(with = "ToneCurveName", default, skip_serializing_if = "is_no_curve")]
+    pub tonemap: ToneCurve,
 }
 
-/// 800 pixels wide, 1 sample per pixel, depth 10, seed 0, `f64`, automatic acceleration:
-/// the specification's minimum render.
+fn is_no_curve(c: &ToneCurve) -> bool {
+    *c == ToneCurve::None
+}
+
+/// 800 pixels wide, 1 sample per pixel, depth 10, seed 0, `f64`, automatic acceleration,
+/// no exposure change and no tone curve: the specification's minimum render.
 impl Default for RenderOptions {
     fn default() -> Self {
         Self {
@@ -46,8 +58,18 @@ impl Default for RenderOptions {
             seed: 0,
             precision: FilePrecision::F64,
             acceleration: Acceleration::Auto,
+            exposure: 0.0,
+            tonemap: ToneCurve::None,
         }
     }
+}
+
+/// The library's [`ToneCurve`] under the names the file uses.
+#[derive(Serialize, Deserialize)]
+#[serde(remote = "ToneCurve", rename_all = "lowercase")]
+enum ToneCurveName {
+    None,
+    Aces,
 }
 
 /// The scalar a scene file asks to be rendered in.
@@ -88,7 +110,7 @@ pub enum CameraSpec {
         )]
         eye: Option<Triple>,
     },
-    /// A pinhole camera at `from` looking at `at`.
+    /// A camera at `from` looking at `at`: a pinhole, or with `aperture > 0` a thin lens.
     LookAt {
         /// The eye.
         #[serde(deserialize_with = "super::triple::deserialize")]
@@ -103,7 +125,18 @@ pub enum CameraSpec {
         vfov: f64,
         /// Width over height: the image is `width × ⌊width/aspect⌋` pixels.
         aspect: f64,
+        /// The lens radius, `≥ 0`; 0 (the default) is a pinhole.
+        #[serde(default, skip_serializing_if = "is_zero")]
+        aperture: f64,
+        /// The distance along the view axis that is sharp, `> 0` (default `|at − from|`).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        focus_distance: Option<f64>,
     },
+}
+
+/// Whether an optional number is at its default, 0 (`-0` is written: it reads back as `-0`).
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0 && x.is_sign_positive()
 }
 
 fn y_up() -> Triple {
@@ -412,16 +445,4 @@ impl Scale {
             Self::PerAxis(s) => s,
         }
     }
-}
-
-/// One `[[lights]]` entry: a point light.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LightSpec {
-    /// Where it is.
-    #[serde(deserialize_with = "super::triple::deserialize")]
-    pub position: Triple,
-    /// Its radiant intensity per channel, `≥ 0`.
-    #[serde(deserialize_with = "super::triple::deserialize")]
-    pub intensity: Triple,
 }

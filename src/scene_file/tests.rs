@@ -97,6 +97,8 @@ fn everything_round_trips_through_toml() {
         up: [0.0, 1.0, 0.0],
         vfov: 20.0,
         aspect: 16.0 / 9.0,
+        aperture: 0.1,
+        focus_distance: Some(10.0),
     };
     f.background = BackgroundSpec::Solid {
         color: [0.1, 0.2, 0.3],
@@ -149,9 +151,20 @@ fn everything_round_trips_through_toml() {
             material: "named".into(),
         },
     );
-    f.lights.push(LightSpec {
+    f.lights.push(LightSpec::Point {
         position: [1.0, 2.0, 3.0],
         intensity: [4.0, 5.0, 6.0],
+    });
+    f.lights.push(LightSpec::Spot {
+        position: [1.0, 2.0, 3.0],
+        direction: [0.0, -1.0, 0.0],
+        intensity: [4.0, 5.0, 6.0],
+        cutoff_angle: 30.0,
+        beam_width: None,
+    });
+    f.lights.push(LightSpec::Directional {
+        direction: [1.0, -1.0, 0.5],
+        irradiance: [2.0, 2.0, 1.5],
     });
     let text = f.to_toml();
     assert_eq!(parse(&text).unwrap(), f, "{text}");

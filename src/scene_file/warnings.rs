@@ -16,7 +16,7 @@ use std::fmt;
 pub enum Warning {
     /// No `[[objects]]`: the image is the background alone.
     NoObjects,
-    /// Nothing gives off light: a black background, no point light with any intensity and
+    /// Nothing gives off light: a black background, no light with any intensity or irradiance and
     /// no object of an emissive material with any radiance. The image is black.
     NoLight,
     /// A small preview render ([`Warning::PREVIEW_WIDTH`] pixels wide, [`Warning::PREVIEW_SPP`]
@@ -38,7 +38,7 @@ impl fmt::Display for Warning {
             Self::NoObjects => f.write_str("the scene has no [[objects]]: the image is the background alone"),
             Self::NoLight => f.write_str(
                 "nothing gives off light (the background is black, no [[lights]] entry has an \
-                 intensity, no object's material emits): the image will be black",
+                 intensity or irradiance, no object's material emits): the image will be black",
             ),
             Self::DarkPreview => write!(
                 f,
@@ -64,7 +64,7 @@ pub(super) fn static_warnings(file: &SceneFile) -> Vec<Warning> {
         // An environment map's texels are read when the scene is built: assume light.
         BackgroundSpec::Envmap { scale, .. } => *scale > 0.0,
     };
-    let lights = file.lights.iter().any(|l| bright(l.intensity));
+    let lights = file.lights.iter().any(|l| bright(l.color()));
     let emitters = file.objects.iter().any(|o| {
         matches!(
             file.materials.get(o.material()),
@@ -88,6 +88,8 @@ pub(super) fn dark_preview<F: Float>(file: &SceneFile, built: &Built<F>) -> Resu
             up,
             vfov,
             aspect,
+            aperture,
+            focus_distance,
         } => {
             // The file's aspect, at most 64 rows and at least one.
             let height = (super::build::look_at_height(width, aspect) as usize).clamp(1, width);
@@ -96,6 +98,8 @@ pub(super) fn dark_preview<F: Float>(file: &SceneFile, built: &Built<F>) -> Resu
                 at,
                 up,
                 vfov,
+                aperture,
+                focus_distance,
                 size: (width, height),
             })?
         }

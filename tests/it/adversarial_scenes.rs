@@ -17,6 +17,11 @@ const BIN: &str = env!("CARGO_BIN_EXE_raytrace");
 const BASE: &str = "[render]\nwidth = 16\n\n[materials.m]\ntype = \"lambertian\"\nalbedo = [0.5, 0.5, 0.5]\n\n\
                     [[objects]]\ntype = \"sphere\"\ncenter = [0, 0, -3]\nradius = 1\nmaterial = \"m\"\n";
 
+/// A spot light's keys but its angles, from the second line of an entry added by [`plus`]
+/// (line 14).
+const SPOT: &str =
+    "[[lights]]\ntype = \"spot\"\nposition = [0, 2, 0]\ndirection = [0, -1, 0]\nintensity = [1, 1, 1]\n";
+
 /// A look-at camera (aspect 2) for [`BASE`].
 const LOOK_AT: &str =
     "\n[camera]\ntype = \"look_at\"\nfrom = [0, 0, 0]\nat = [0, 0, -1]\nvfov = 40\naspect = 2\n";
@@ -133,7 +138,7 @@ fn ply(body: &str) -> Vec<u8> {
 fn cases() -> Vec<Case> {
     vec![
         // Values outside their domain: the field's path, and the value.
-        case("negative radius", edit("radius = 1", "radius = -1"), 1, &["s.toml: objects[0].radius: must be > 0 (got -1)"]),
+        case("negative radius", edit("radius = 1", "radius = -1"), 1, &["s.toml: line 11, column 10: objects[0].radius: must be > 0 (got -1)"]),
         case("NaN radius", edit("radius = 1", "radius = nan"), 1, &["objects[0].radius", "NaN"]),
         case("infinite centre", edit("[0, 0, -3]", "[0, 0, -inf]"), 1, &["objects[0].center", "finite", "[0, 0, -inf]"]),
         case("albedo above 1", edit("[0.5, 0.5, 0.5]", "[0.5, 1.5, 0.5]"), 1, &["materials.m.albedo", "[0, 1]"]),
@@ -144,8 +149,23 @@ fn cases() -> Vec<Case> {
         case("negative background", plus("[background]\ntype = \"solid\"\ncolor = [0, -0.1, 0]"), 1, &["background.color"]),
         case("bright sky", plus("[background]\ntype = \"sky\"\nzenith = [nan, 1, 1]"), 1, &["background.zenith"]),
         case("zero normal", plus("[[objects]]\ntype = \"plane\"\npoint = [0, -1, 0]\nnormal = [0, 0, 0]\nmaterial = \"m\""), 1, &["objects[1].normal", "non-zero"]),
-        case("flat triangle", plus("[[objects]]\ntype = \"triangle\"\na = [0, 0, -3]\nb = [1, 1, -3]\nc = [2, 2, -3]\nmaterial = \"m\""), 1, &["s.toml: objects[1]: ", "no area"]),
+        case("flat triangle", plus("[[objects]]\ntype = \"triangle\"\na = [0, 0, -3]\nb = [1, 1, -3]\nc = [2, 2, -3]\nmaterial = \"m\""), 1, &["s.toml: line 14, column 1: objects[1]: ", "no area"]),
         case("unknown material", edit("material = \"m\"", "material = \"gold\""), 1, &["objects[0].material", "`gold`", "`m`"]),
+        // Spot and directional lights, the thin lens, the tone map: at their line and key.
+        case("cutoff past 90°", plus(&format!("{SPOT}cutoff_angle = 120")), 1, &["s.toml: line 19, column 16: lights[0].cutoff_angle: must be in (0, 90] degrees (got 120)"]),
+        case("beam past the cutoff", plus(&format!("{SPOT}cutoff_angle = 40\nbeam_width = 50")), 1, &["s.toml: line 20, column 14: lights[0].beam_width: must be in [0, cutoff_angle] = [0, 40] degrees (got 50)"]),
+        case("default beam, cutoff 0", plus(&format!("{SPOT}cutoff_angle = 0")), 1, &["line 19, column 16: lights[0].cutoff_angle", "(got 0)"]),
+        case("zero sun direction", plus("[[lights]]\ntype = \"directional\"\ndirection = [0, 0, 0]\nirradiance = [1, 1, 1]"), 1, &["s.toml: line 16, column 13: lights[0].direction: must be a non-zero vector (got [0, 0, 0])"]),
+        case("zero spot direction", plus(&SPOT.replace("[0, -1, 0]", "[0, 0, 0]")), 1, &["s.toml: line 17, column 13: lights[0].direction: must be a non-zero vector"]),
+        case("negative sun", plus("[[lights]]\ntype = \"directional\"\ndirection = [0, -1, 0]\nirradiance = [1, -1, 1]"), 1, &["line 17, column 14: lights[0].irradiance", "≥ 0"]),
+        case("spot without direction", plus("[[lights]]\ntype = \"spot\"\nposition = [0, 2, 0]\nintensity = [1, 1, 1]"), 1, &["s.toml: line 14, column 1: lights[0]: missing field `direction`"]),
+        case("irradiance of a point light", plus("[[lights]]\nposition = [0, 2, 0]\nintensity = [1, 1, 1]\nirradiance = [1, 1, 1]"), 1, &["s.toml: line 17, column 1: lights[0]: unknown field `irradiance`, expected one of `type`, `position`, `intensity`"]),
+        case("unknown light", plus("[[lights]]\ntype = \"area\"\nposition = [0, 2, 0]"), 1, &["s.toml: line 15, column 8: lights[0].type: unknown variant `area`"]),
+        case("negative aperture", format!("{BASE}{LOOK_AT}aperture = -0.5\n"), 1, &["s.toml: line 20, column 12: camera.aperture: must be a finite number ≥ 0 (got -0.5)"]),
+        case("negative focus", format!("{BASE}{LOOK_AT}aperture = 0.1\nfocus_distance = -2\n"), 1, &["s.toml: line 21, column 18: camera.focus_distance: must be > 0 (got -2)"]),
+        case("lens on the spec's camera", format!("{BASE}\n[camera]\ntype = \"screen\"\naperture = 1\n"), 1, &["line 16, column 1: camera: unknown field `aperture`"]),
+        case("exposure not a number", edit("width = 16", "width = 16\nexposure = nan"), 1, &["s.toml: line 3, column 12: render.exposure: must be a number of stops in [-64, 64] (got NaN)"]),
+        case("unknown tone curve", edit("width = 16", "width = 16\ntonemap = \"filmic\""), 1, &["s.toml: line 3, column 11: render.tonemap: unknown variant `filmic`"]),
         // The camera and the image's size.
         case("zero fov", format!("{BASE}{}", LOOK_AT.replace("vfov = 40", "vfov = 0")), 1, &["camera.vfov", "(0, 180)"]),
         case("eye on target", format!("{BASE}{}", LOOK_AT.replace("at = [0, 0, -1]", "at = [0, 0, 0]")), 1, &["camera.at"]),

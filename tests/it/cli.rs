@@ -217,6 +217,50 @@ fn default_names_carry_the_precision_and_a_linear_encoding() {
 }
 
 #[test]
+fn default_names_carry_the_exposure_and_tone_curve_of_pictures_only() {
+    let names = default_names(
+        "tonemap-names",
+        &[
+            &[],
+            &["--exposure", "1.5"],
+            &["--tonemap", "aces"],
+            &["--exposure", "-2", "--tonemap", "aces", "--format", "ppm"],
+            // EXR stays linear: its name, like its bytes, ignores both.
+            &["--exposure", "1.5", "--tonemap", "aces", "--format", "exr"],
+        ],
+    );
+    assert_eq!(
+        names,
+        [
+            "matte_spheres-w24-2spp-d10-seed0-f64-aces.png",
+            "matte_spheres-w24-2spp-d10-seed0-f64-ev-2-aces.ppm",
+            "matte_spheres-w24-2spp-d10-seed0-f64-ev1.5.png",
+            "matte_spheres-w24-2spp-d10-seed0-f64.exr",
+            "matte_spheres-w24-2spp-d10-seed0-f64.png",
+        ]
+    );
+}
+
+#[test]
+fn a_bad_exposure_is_a_usage_error_naming_the_option() {
+    let s = scene("matte_spheres.toml");
+    let s = s.to_str().unwrap();
+    expect(
+        &run(&["render", s, "--exposure", "65"]),
+        2,
+        &["--exposure", "[-64, 64]"],
+    );
+    expect(&run(&["render", s, "--exposure", "nan"]), 2, &["--exposure"]);
+    expect(&run(&["render", s, "--tonemap", "reinhard"]), 2, &["--tonemap"]);
+    // Merging too, before any tile is read.
+    expect(
+        &run(&["merge", "--exposure", "99", "--out", "x.png", "missing.rtile"]),
+        2,
+        &["invalid value '99' for '--exposure'"],
+    );
+}
+
+#[test]
 fn check_and_advise_describe_the_scene() {
     let s = scene("plane_and_triangles.toml");
     expect(

@@ -293,3 +293,38 @@ fn a_width_in_quotes_is_refused_as_spp_in_quotes_is() {
     let file = parse("[render]\nseed = \"18446744073709551615\"\n").unwrap();
     assert_eq!(file.render().seed, u64::MAX);
 }
+
+/// A build error's `(location, line)`.
+fn built_error_line(text: &str) -> (String, Option<(usize, usize)>) {
+    match parse(text).unwrap().build::<f64>() {
+        Err(raytrace::Error::SceneFile { location, line, .. }) => (location, line),
+        other => panic!("expected a scene file error, got {other:?}"),
+    }
+}
+
+#[test]
+fn an_invalid_value_also_says_on_which_line_it_is_written() {
+    let text = GOOD.replace("radius = 1.0\n", "radius = -1\n");
+    let (location, line) = built_error_line(&text);
+    assert_eq!(location, "objects[3].radius");
+    let (l, c) = line.expect("a parsed file knows its lines");
+    assert_eq!(&text.lines().nth(l - 1).unwrap()[c - 1..], "-1");
+    let e = parse(&text).unwrap().build::<f64>().unwrap_err().to_string();
+    assert_eq!(
+        e,
+        format!("bad.toml: line {l}, column {c}: objects[3].radius: must be > 0 (got -1)")
+    );
+    // A value left at its default is at the table it belongs to: the camera's height comes
+    // from `[render] width`, here not written, so the `[render]` header.
+    let look_at = "[render]\nspp = 1\n\n[camera]\ntype = \"look_at\"\nfrom = [0, 0, 0]\nat = [0, 0, -1]\nvfov = 40\naspect = 1e9\n";
+    assert_eq!(built_error_line(look_at), ("render.width".into(), Some((1, 1))));
+    // A file made in code has no text, hence no line.
+    let mut file = raytrace::scene_file::SceneFile::default();
+    file.render_mut().width = 0;
+    match file.build::<f64>() {
+        Err(raytrace::Error::SceneFile { location, line, .. }) => {
+            assert_eq!((location.as_str(), line), ("render.width", None));
+        }
+        other => panic!("{other:?}"),
+    }
+}

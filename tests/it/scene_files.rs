@@ -6,6 +6,7 @@ use crate::common;
 use crate::scenes;
 
 use proptest::prelude::*;
+use raytrace::image::ToneCurve;
 use raytrace::prelude::*;
 use raytrace::scene_file::{
     BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
@@ -137,16 +138,28 @@ fn finite() -> impl Strategy<Value = f64> {
 }
 
 fn any_file() -> impl Strategy<Value = SceneFile> {
-    let render = (1..5000usize, 1..100u32, 0..1000u32, any::<u64>(), 0..3u8, 0..3u8).prop_map(
-        |(width, spp, max_depth, seed, p, a)| RenderOptions {
-            width,
-            spp,
-            max_depth,
-            seed,
-            precision: [FilePrecision::F32, FilePrecision::F64, FilePrecision::Auto][p as usize],
-            acceleration: [Acceleration::Auto, Acceleration::Linear, Acceleration::Bvh][a as usize],
-        },
-    );
+    let render = (
+        1..5000usize,
+        1..100u32,
+        0..1000u32,
+        any::<u64>(),
+        0..3u8,
+        0..3u8,
+        prop_oneof![Just(0.0), finite()],
+        any::<bool>(),
+    )
+        .prop_map(
+            |(width, spp, max_depth, seed, p, a, exposure, aces)| RenderOptions {
+                width,
+                spp,
+                max_depth,
+                seed,
+                precision: [FilePrecision::F32, FilePrecision::F64, FilePrecision::Auto][p as usize],
+                acceleration: [Acceleration::Auto, Acceleration::Linear, Acceleration::Bvh][a as usize],
+                exposure,
+                tonemap: if aces { ToneCurve::Aces } else { ToneCurve::None },
+            },
+        );
     let camera = prop_oneof![
         proptest::option::of([finite(), finite(), finite()]).prop_map(|eye| CameraSpec::Screen { eye }),
         (
@@ -154,15 +167,21 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
             triple(-5.0..5.0),
             triple(-1.0..1.0),
             1.0..179.0f64,
-            0.1..10.0f64
+            0.1..10.0f64,
+            prop_oneof![Just(0.0), finite()],
+            proptest::option::of(finite())
         )
-            .prop_map(|(from, at, up, vfov, aspect)| CameraSpec::LookAt {
-                from,
-                at,
-                up,
-                vfov,
-                aspect
-            }),
+            .prop_map(
+                |(from, at, up, vfov, aspect, aperture, focus_distance)| CameraSpec::LookAt {
+                    from,
+                    at,
+                    up,
+                    vfov,
+                    aspect,
+                    aperture,
+                    focus_distance
+                }
+            ),
     ];
     let background = prop_oneof![
         (triple(0.0..2.0), triple(0.0..2.0)).prop_map(|(horizon, zenith)| BackgroundSpec::Sky {
@@ -229,8 +248,30 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
                 flip_tex_coords: None,
             }),
     ];
-    let light = (triple(-9.0..9.0), triple(0.0..50.0))
-        .prop_map(|(position, intensity)| LightSpec { position, intensity });
+    let light = prop_oneof![
+        (triple(-9.0..9.0), triple(0.0..50.0))
+            .prop_map(|(position, intensity)| LightSpec::Point { position, intensity }),
+        (
+            triple(-9.0..9.0),
+            triple(-1.0..1.0),
+            triple(0.0..50.0),
+            finite(),
+            proptest::option::of(finite())
+        )
+            .prop_map(
+                |(position, direction, intensity, cutoff_angle, beam_width)| LightSpec::Spot {
+                    position,
+                    direction,
+                    intensity,
+                    cutoff_angle,
+                    beam_width
+                }
+            ),
+        (triple(-1.0..1.0), triple(0.0..5.0)).prop_map(|(direction, irradiance)| LightSpec::Directional {
+            direction,
+            irradiance
+        }),
+    ];
     (
         render,
         camera,
@@ -350,7 +391,8 @@ fn auto_precision_picks_f64_for_a_scene_only_f64_holds_and_names_the_key() {
     assert_eq!(advice.recommended, raytrace::advice::Precision::F64);
     let why = advice.reason.to_string();
     assert!(
-        why.contains("cannot be built in f32") && why.contains("tiny.toml: objects[3].radius"),
+        why.contains("cannot be built in f32")
+            && why.contains("tiny.toml: line 61, column 10: objects[3].radius"),
         "{why}"
     );
 }

@@ -3,6 +3,7 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use raytrace::RenderSettings;
 use raytrace::cli::parse_threads;
+use raytrace::image::ToneCurve;
 use std::path::PathBuf;
 
 /// Renders scene files (TOML; the format: docs/SCENE_FORMAT.md).
@@ -66,6 +67,13 @@ pub struct RenderArgs {
     /// How colour is stored in PPM and PNG files (EXR and PFM are always linear)
     #[arg(long, value_name = "E", default_value = "srgb")]
     pub encoding: EncodingArg,
+    /// Stops of exposure for PPM and PNG, -64 to 64: +1 doubles every value (EXR and PFM
+    /// stay linear) [default: the scene's]
+    #[arg(long, value_name = "S", allow_negative_numbers = true)]
+    pub exposure: Option<f64>,
+    /// The tone curve for PPM and PNG (EXR and PFM stay linear) [default: the scene's]
+    #[arg(long, value_name = "C")]
+    pub tonemap: Option<TonemapArg>,
     /// Render only tile K of N (horizontal bands, K from 1), into a tile file for `merge`
     #[arg(long, value_name = "K/N", value_parser = parse_tile)]
     pub tile: Option<(usize, usize)>,
@@ -89,6 +97,12 @@ pub struct MergeArgs {
     /// How colour is stored in PPM and PNG files
     #[arg(long, value_name = "E", default_value = "srgb")]
     pub encoding: EncodingArg,
+    /// Stops of exposure for PPM and PNG, -64 to 64: +1 doubles every value
+    #[arg(long, value_name = "S", default_value_t = 0.0, allow_negative_numbers = true)]
+    pub exposure: f64,
+    /// The tone curve for PPM and PNG
+    #[arg(long, value_name = "C", default_value = "none")]
+    pub tonemap: TonemapArg,
     /// Nothing on stderr while the image is written
     #[arg(long)]
     pub quiet: bool,
@@ -147,6 +161,25 @@ pub enum EncodingArg {
     Linear,
 }
 
+/// `--tonemap`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TonemapArg {
+    /// No curve: values above 1 clip.
+    None,
+    /// Narkowicz's fit of the ACES filmic curve.
+    Aces,
+}
+
+impl TonemapArg {
+    /// The library's curve.
+    pub fn curve(self) -> ToneCurve {
+        match self {
+            Self::None => ToneCurve::None,
+            Self::Aces => ToneCurve::Aces,
+        }
+    }
+}
+
 /// `K/N` with `1 ≤ K ≤ N`.
 fn parse_tile(s: &str) -> Result<(usize, usize), String> {
     let (k, n) = s
@@ -192,6 +225,27 @@ mod tests {
     }
 
     #[test]
+    fn a_negative_exposure_is_a_value() {
+        let cli = Cli::try_parse_from([
+            "raytrace",
+            "render",
+            "s.toml",
+            "--exposure",
+            "-1.5",
+            "--tonemap",
+            "aces",
+        ])
+        .unwrap();
+        let Command::Render(args) = cli.command else {
+            panic!("{cli:?}")
+        };
+        assert_eq!(
+            (args.exposure, args.tonemap),
+            (Some(-1.5), Some(TonemapArg::Aces))
+        );
+    }
+
+    #[test]
     fn bad_options_are_usage_errors() {
         for args in [
             &["raytrace", "render", "s.toml", "--threads", "0"][..],
@@ -201,6 +255,8 @@ mod tests {
             &["raytrace", "render", "s.toml", "--max-depth", "1001"],
             &["raytrace", "render", "s.toml", "--precision", "f16"],
             &["raytrace", "render", "s.toml", "--format", "jpg"],
+            &["raytrace", "render", "s.toml", "--tonemap", "filmic"],
+            &["raytrace", "render", "s.toml", "--exposure", "bright"],
             &["raytrace", "merge", "--out", "x.png"],
             &["raytrace", "paint", "s.toml"],
         ] {

@@ -6,8 +6,8 @@ use crate::inputs;
 use raytrace::advice::Precision;
 use raytrace::cli::{check_output, set_activity, write_file};
 use raytrace::image::{
-    Encoding, TileHeader, merge_tiles, read_tile, write_exr, write_exr_to, write_pfm, write_pfm_to,
-    write_png, write_png_to, write_ppm, write_ppm_to, write_tile, write_tile_to,
+    Encoding, TileHeader, ToneCurve, Tonemap, merge_tiles, read_tile, write_exr, write_exr_to, write_pfm,
+    write_pfm_to, write_png, write_png_to, write_ppm, write_ppm_to, write_tile, write_tile_to,
 };
 use raytrace::scene_file::{RenderOptions, SceneFile};
 use raytrace::{Error, Image, Result};
@@ -23,6 +23,8 @@ pub struct Target {
     /// Its image format; `None` for a tile file.
     format: Option<Format>,
     encoding: Encoding,
+    /// The exposure and tone curve of PPM and PNG files.
+    tonemap: Tonemap,
     /// The files the command reads, which the output must not replace.
     inputs: Vec<PathBuf>,
     /// Show a spinner on stderr while writing (when it is a terminal).
@@ -33,6 +35,7 @@ impl Target {
     /// The output of `raytrace render`: `--out`, or [`default_name`].
     pub fn for_render(args: &RenderArgs, file: &SceneFile, precision: Precision) -> Result<Self> {
         let encoding = encoding(args.encoding);
+        let tonemap = file.tonemap()?;
         let format = match args.tile {
             Some(_) => None,
             None => Some(choose_format(args.format, args.out.as_deref(), Format::Png)?),
@@ -40,7 +43,7 @@ impl Target {
         let path = args
             .out
             .clone()
-            .unwrap_or_else(|| default_name(args, file, precision, format));
+            .unwrap_or_else(|| default_name(args, file, precision, format, tonemap));
         set_activity(format!(
             "rendering {} for {}",
             file.path().display(),
@@ -50,6 +53,7 @@ impl Target {
             path,
             format,
             encoding,
+            tonemap,
             inputs: inputs::of_scene(file),
             spinner: !args.quiet,
         })
@@ -90,7 +94,9 @@ impl Target {
         let format = self
             .format
             .ok_or_else(|| usage("a tile target holds a tile, not an image"))?;
-        let samples = || image.to_u16(self.encoding);
+        // Exposure and tone curve only where the image is made a picture: EXR and PFM keep
+        // the linear values.
+        let samples = || image.to_u16_tonemapped(self.tonemap, self.encoding);
         let e = self.encoding;
         self.write(format.extension(), |out| match (format, out) {
             (Format::Ppm, Out::File(p)) => write_ppm(p, &samples()),
@@ -198,10 +204,12 @@ impl Spinner {
 /// `raytrace merge`: reads the tiles, checks they make one image, writes it.
 pub fn merge(args: &MergeArgs) -> Result<()> {
     let format = choose_format(args.format, Some(&args.out), Format::Png)?;
+    let tonemap = merge_tonemap(args).map_err(|e| usage(&e))?;
     let target = Target {
         path: args.out.clone(),
         format: Some(format),
         encoding: encoding(args.encoding),
+        tonemap,
         inputs: args.tiles.clone(),
         spinner: !args.quiet,
     };
@@ -240,14 +248,16 @@ pub fn describe(r: &RenderOptions, precision: Precision) -> String {
 pub use inputs::scene_hash;
 
 /// The name of a render without `--out`: the scene's, then every setting that changes the
-/// file's bytes (`-linear` only where the format stores sRGB otherwise), so renders with
-/// other settings do not overwrite each other: `matte_spheres-w800-16spp-d10-seed0-f32.png`,
-/// `…-f64-linear.ppm`, `…-f64-tile2of4.rtile`. `format` is `None` for a tile.
+/// file's bytes (`-linear`, the exposure and the tone curve only where the format stores a
+/// picture), so renders with other settings do not overwrite each other:
+/// `matte_spheres-w800-16spp-d10-seed0-f32.png`, `…-f64-linear.ppm`,
+/// `…-f64-ev1.5-aces.png`, `…-f64-tile2of4.rtile`. `format` is `None` for a tile.
 fn default_name(
     args: &RenderArgs,
     file: &SceneFile,
     precision: Precision,
     format: Option<Format>,
+    tonemap: Tonemap,
 ) -> PathBuf {
     let name = args
         .scene
@@ -260,8 +270,15 @@ fn default_name(
     );
     match (format, args.tile) {
         (Some(f), _) => {
-            if args.encoding == EncodingArg::Linear && matches!(f, Format::Ppm | Format::Png) {
+            let picture = matches!(f, Format::Ppm | Format::Png);
+            if picture && args.encoding == EncodingArg::Linear {
                 name.push_str("-linear");
+            }
+            if picture && tonemap.exposure() != 0.0 {
+                name.push_str(&format!("-ev{}", tonemap.exposure()));
+            }
+            if picture && tonemap.curve() == ToneCurve::Aces {
+                name.push_str("-aces");
             }
             name.push('.');
             name.push_str(f.extension());
@@ -292,9 +309,22 @@ pub fn check_usage(command: &Command) -> Result<(), String> {
             }
         }
         Command::Render(args) => format_for(args.format, args.out.as_deref(), Format::Png).map(drop),
-        Command::Merge(args) => format_for(args.format, Some(&args.out), Format::Png).map(drop),
+        Command::Merge(args) => {
+            merge_tonemap(args)?;
+            format_for(args.format, Some(&args.out), Format::Png).map(drop)
+        }
         _ => Ok(()),
     }
+}
+
+/// `raytrace merge`'s `--exposure` and `--tonemap`, or the usage error naming the option.
+fn merge_tonemap(args: &MergeArgs) -> Result<Tonemap, String> {
+    Tonemap::new(args.exposure, args.tonemap.curve()).map_err(|e| match e {
+        Error::InvalidValue { reason, .. } => {
+            format!("invalid value '{}' for '--exposure': {reason}", args.exposure)
+        }
+        other => other.to_string(),
+    })
 }
 
 /// `--format`, else the extension of `--out`, else `default`; a conflict is an error.

@@ -79,6 +79,7 @@ fn blame_option(e: Error, args: &RenderArgs) -> Failure {
             Field::ImageWidth | Field::ImageSize => args.width.map(|w| ("--width", w.to_string())),
             Field::SamplesPerPixel => args.spp.map(|n| ("--spp", n.to_string())),
             Field::MaxDepth => args.max_depth.map(|d| ("--max-depth", d.to_string())),
+            Field::Exposure => args.exposure.map(|s| ("--exposure", s.to_string())),
             _ => None,
         };
         if let Some((option, value)) = option {
@@ -103,6 +104,12 @@ fn override_settings(file: &mut SceneFile, args: &RenderArgs) -> Result<(), Fail
     }
     if let Some(s) = args.seed {
         r.seed = s;
+    }
+    if let Some(s) = args.exposure {
+        r.exposure = s;
+    }
+    if let Some(t) = args.tonemap {
+        r.tonemap = t.curve();
     }
     if let Some(p) = args.precision {
         r.precision = match p {
