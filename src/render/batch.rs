@@ -115,7 +115,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             self.rays.clear();
             self.pixels.clear();
             for (i, (&(x, y, _), rng)) in self.pixels_at.iter().zip(&mut self.rngs).enumerate() {
-                self.rays.push(camera_ray(camera, x, y, spp, rng));
+                self.rays.push(camera_ray(camera, x, y, spp > 1, rng));
                 self.pixels.push(i as u32);
             }
             self.arrivals.clear();
@@ -128,6 +128,39 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         for (o, &sum) in out.iter_mut().zip(&self.sums) {
             *o = mean(sum, spp).to_f64();
         }
+    }
+
+    /// Traces one sample of each of `samples`, `(x, y, stream, sample)`: sample `sample`
+    /// of the pixel at `(x, y)` with random stream `stream`, its camera ray jittered in
+    /// the pixel. Returns their colours, in the same order: each is the colour the
+    /// reference renderer's recursion gives that sample.
+    pub(super) fn trace_samples<S, M, C>(
+        &mut self,
+        tracer: &mut Tracer<'_, F, S, M>,
+        camera: &C,
+        samples: &[(usize, usize, u64, u32)],
+    ) -> &[Color<F>]
+    where
+        S: Layout<F>,
+        M: Scatter<F, R>,
+        C: Camera<F>,
+    {
+        self.rngs.clear();
+        self.rngs.extend(
+            samples
+                .iter()
+                .map(|&(_, _, stream, sample)| sample_rng(stream, sample)),
+        );
+        self.rays.clear();
+        self.pixels.clear();
+        for (i, (&(x, y, _, _), rng)) in samples.iter().zip(&mut self.rngs).enumerate() {
+            self.rays.push(camera_ray(camera, x, y, true, rng));
+            self.pixels.push(i as u32);
+        }
+        self.arrivals.clear();
+        self.arrivals.resize(self.rays.len(), Arrival::Unweighted);
+        self.trace(tracer);
+        &self.ends
     }
 
     /// Traces the started paths to their ends and leaves each pixel's colour in `ends`.

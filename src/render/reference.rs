@@ -48,7 +48,7 @@ where
         let mut sum = Color::zero();
         for sample in 0..settings.samples_per_pixel {
             let mut rng: R = sample_rng(stream, sample);
-            let ray = camera_ray(camera, x, y, settings.samples_per_pixel, &mut rng);
+            let ray = camera_ray(camera, x, y, settings.samples_per_pixel > 1, &mut rng);
             sum = sum + tracer.trace(&ray, 0, &mut rng);
         }
         *out = mean(sum, settings.samples_per_pixel).to_f64();
@@ -60,6 +60,8 @@ where
             elapsed: start.elapsed(),
             threads: 1,
         },
+        convergence: None,
+        aov: None,
     })
 }
 
@@ -83,18 +85,19 @@ pub(super) fn sample_rng<R: SeedableRng>(stream: u64, sample: u32) -> R {
     R::seed_from_u64(seed::seed_in_stream(stream, u64::from(sample)))
 }
 
-/// A sample's camera ray: with one sample per pixel through the pixel centre (the spec's
-/// basic mode), with more through a uniform random point of the pixel's cell.
+/// A sample's camera ray: through a uniform random point of the pixel's cell if
+/// `jitter` (more than one sample per pixel), else through the pixel centre (the spec's
+/// basic mode, one sample per pixel), drawing nothing.
 #[inline]
 pub(super) fn camera_ray<F: Float, R: Rng + ?Sized>(
     camera: &impl Camera<F>,
     x: usize,
     y: usize,
-    spp: u32,
+    jitter: bool,
     rng: &mut R,
 ) -> Ray<F> {
     let (x, y) = (lit::<F>(x as f64), lit::<F>(y as f64));
-    if spp == 1 {
+    if !jitter {
         return camera.ray(x, y);
     }
     let (dx, dy) = pixel_jitter(rng);
