@@ -8,8 +8,9 @@
 //!
 //! `e = σ̂ / (√n · max(Ȳ, floor))`,
 //!
-//! `Ȳ` the mean of the `n` sample luminances and `σ̂` their standard deviation
-//! ([`estimate`] says how it is made conservative). So a pixel brighter than the floor
+//! `Ȳ` the mean of the `n` sample luminances and `σ̂` their standard deviation, made
+//! conservative against the two ways a pixel's own samples understate it
+//! ([`ErrorEstimate::Guarded`]). So a pixel brighter than the floor
 //! reaches `e ≤ E` when its standard error is a share `E` of its value, and a pixel darker
 //! than the floor when its standard error is below `E · floor` in absolute terms: a
 //! near-black pixel does not need millions of samples to be known to 1 % of almost
@@ -48,7 +49,7 @@ mod stats;
 
 pub use convergence::{Convergence, ConvergenceSummary};
 pub(super) use engine::render_adaptive;
-pub use stats::{estimate, luminance};
+pub use stats::luminance;
 
 use crate::error::{Error, Result};
 use std::time::Duration;
@@ -70,6 +71,24 @@ pub struct Adaptive {
     pub max_spp: u32,
     /// The luminance below which a pixel's error is measured in absolute terms.
     pub error_floor: f64,
+    /// How a pixel's error is estimated from its samples.
+    pub estimate: ErrorEstimate,
+}
+
+/// How a pixel's standard error is estimated from its samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ErrorEstimate {
+    /// The sample variance made an upper confidence bound (one standard error of it above,
+    /// from the sample kurtosis) with one pseudo-sample against paths not yet found: a
+    /// pixel never claims a relative error below `1/n`. The default; the formula and the
+    /// reasons are at `stats::estimate` (src/render/adaptive/stats.rs), the measurements
+    /// in tests/it/adaptive_calibration.rs.
+    #[default]
+    Guarded,
+    /// The plain sample variance, `s²/n`: too small exactly when a pixel stops (when it
+    /// happens to be low, or before a rare path has been found). Kept to be measured
+    /// against: the calibration test shows it stating too small an error.
+    SampleVariance,
 }
 
 impl Adaptive {
@@ -110,6 +129,7 @@ impl Adaptive {
             min_spp: Self::DEFAULT_MIN_SPP,
             max_spp: Self::DEFAULT_MAX_SPP,
             error_floor: Self::DEFAULT_FLOOR,
+            estimate: ErrorEstimate::Guarded,
         }
     }
 

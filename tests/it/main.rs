@@ -14,9 +14,13 @@ mod parts;
 #[path = "../../examples/scenes/mod.rs"]
 mod scenes;
 
+mod adaptive;
+mod adaptive_calibration;
+mod adaptive_cli;
 mod adversarial_files;
 mod adversarial_scenes;
 mod advice;
+mod aov;
 mod bad_input;
 mod bvh_scene;
 mod cli;

@@ -49,11 +49,11 @@ pub struct RenderArgs {
     pub spp: Option<u32>,
     /// Sample each pixel until the relative standard error of its mean luminance is at
     /// most E (0.01 or 1%), measured against a floor for dark pixels (--error-floor)
-    #[arg(long, value_name = "E", value_parser = parse_error)]
+    #[arg(long, value_name = "E", value_parser = parse_error, allow_negative_numbers = true)]
     pub target_error: Option<f64>,
     /// Sample adaptively for this long (90, 90s, 1.5m, 2h, 500ms), where the error is
     /// largest; the image then depends on the time
-    #[arg(long, value_name = "T", value_parser = parse_duration)]
+    #[arg(long, value_name = "T", value_parser = parse_duration, allow_hyphen_values = true)]
     pub time_budget: Option<Duration>,
     /// With --target-error or --time-budget: samples every pixel takes first
     #[arg(long, value_name = "N", requires = "adaptive", default_value_t = Adaptive::DEFAULT_MIN_SPP,
@@ -66,7 +66,7 @@ pub struct RenderArgs {
     /// With --target-error or --time-budget: the luminance below which a pixel's error is
     /// measured in absolute terms
     #[arg(long, value_name = "Y", requires = "adaptive", default_value_t = Adaptive::DEFAULT_FLOOR,
-          value_parser = parse_error)]
+          value_parser = parse_error, allow_negative_numbers = true)]
     pub error_floor: f64,
     /// Also write a denoiser's feature layers (albedo, shading normal, first-hit depth)
     /// into the EXR (or, for another format, into NAME.layers.exr beside the image)
@@ -282,6 +282,7 @@ mod tests {
             &["--target-error", "0.01", "--min-spp", "8"],
             &["--target-error", "-0.01"],
             &["--time-budget", "0s"],
+            &["--time-budget", "-5s"],
         ] {
             let err = parse(bad).unwrap_err();
             assert_eq!(err.exit_code(), 2, "{bad:?}: {err}");

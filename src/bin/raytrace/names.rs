@@ -3,7 +3,7 @@
 
 use crate::args::{EncodingArg, Format, RenderArgs};
 use raytrace::advice::Precision;
-use raytrace::render::Adaptive;
+use raytrace::render::adaptive::{Adaptive, ErrorEstimate};
 use raytrace::scene_file::{RenderOptions, SceneFile};
 use std::path::PathBuf;
 
@@ -43,6 +43,7 @@ pub fn adaptive_of(args: &RenderArgs) -> Option<Adaptive> {
         min_spp: args.min_spp,
         max_spp: args.max_spp,
         error_floor: args.error_floor,
+        estimate: ErrorEstimate::Guarded,
     })
 }
 

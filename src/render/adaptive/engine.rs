@@ -73,7 +73,7 @@ where
         rounds += 1;
         let errors: Vec<f64> = pixels
             .iter()
-            .map(|p| p.estimate(adaptive.error_floor).error)
+            .map(|p| p.estimate(adaptive.error_floor, adaptive.estimate).error)
             .collect();
         match deadline {
             Some(deadline) => {
@@ -104,7 +104,7 @@ where
         pixels.iter().map(|p| p.n).collect(),
         pixels
             .iter()
-            .map(|p| p.estimate(adaptive.error_floor).error)
+            .map(|p| p.estimate(adaptive.error_floor, adaptive.estimate).error)
             .collect(),
         (adaptive.target_error, adaptive.max_spp),
         rounds,
@@ -223,7 +223,7 @@ fn plan_for_time<F: Float>(
             let done = error <= target || p.n >= adaptive.max_spp;
             Candidate {
                 n: p.n,
-                deviation: p.estimate(adaptive.error_floor).deviation,
+                deviation: p.estimate(adaptive.error_floor, adaptive.estimate).deviation,
                 room: if done { 0 } else { p.n.min(adaptive.max_spp - p.n) },
             }
         })

@@ -1,5 +1,6 @@
 //! A pixel's running statistics and the error estimate made from them.
 
+use super::ErrorEstimate;
 use crate::float::Float;
 use crate::vec3::Color;
 
@@ -64,14 +65,17 @@ impl<F: Float> PixelStats<F> {
     }
 
     /// The error estimate for the samples so far.
-    pub fn estimate(&self, floor: f64) -> Estimate {
-        estimate(self.n, self.mean, self.m2, self.m4, floor)
+    pub fn estimate(&self, floor: f64, kind: ErrorEstimate) -> Estimate {
+        match kind {
+            ErrorEstimate::Guarded => estimate(self.n, self.mean, self.m2, self.m4, floor),
+            ErrorEstimate::SampleVariance => sample_variance(self.n, self.mean, self.m2, floor),
+        }
     }
 }
 
 /// A pixel's error, as estimated from its samples.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Estimate {
+pub(super) struct Estimate {
     /// The relative standard error of the mean luminance, `σ̂/(√n·max(Ȳ, floor))`.
     pub error: f64,
     /// The per-sample relative deviation `σ̂/max(Ȳ, floor)`: `error·√n`, what the time
@@ -104,8 +108,7 @@ pub struct Estimate {
 /// Measured on the Cornell box, a mesh scene and a glass caustic (tests/it/
 /// adaptive_calibration.rs), the plain `s²` put 91–94 % of pixels within twice their
 /// stated error, this estimate at least 95 %.
-#[must_use]
-pub fn estimate(n: u32, mean: f64, m2: f64, m4: f64, floor: f64) -> Estimate {
+pub(super) fn estimate(n: u32, mean: f64, m2: f64, m4: f64, floor: f64) -> Estimate {
     if n < 2 {
         return Estimate {
             error: f64::INFINITY,
@@ -118,6 +121,22 @@ pub fn estimate(n: u32, mean: f64, m2: f64, m4: f64, floor: f64) -> Estimate {
     let scale = mean.max(floor);
     let sigma2 = s2 + var_s2.max(0.0).sqrt() + scale * scale / nf;
     let deviation = sigma2.max(0.0).sqrt() / scale;
+    Estimate {
+        error: deviation / nf.sqrt(),
+        deviation,
+    }
+}
+
+/// [`ErrorEstimate::SampleVariance`]: `σ̂² = s² = m2/(n−1)`, nothing more.
+fn sample_variance(n: u32, mean: f64, m2: f64, floor: f64) -> Estimate {
+    if n < 2 {
+        return Estimate {
+            error: f64::INFINITY,
+            deviation: f64::INFINITY,
+        };
+    }
+    let nf = f64::from(n);
+    let deviation = (m2 / (nf - 1.0)).max(0.0).sqrt() / mean.max(floor);
     Estimate {
         error: deviation / nf.sqrt(),
         deviation,
@@ -155,7 +174,8 @@ mod tests {
         for _ in 0..20 {
             stats.add(Color::splat(0.5));
         }
-        let e = stats.estimate(0.01);
+        let e = stats.estimate(0.01, ErrorEstimate::Guarded);
+        assert_eq!(stats.estimate(0.01, ErrorEstimate::SampleVariance).error, 0.0);
         assert!((e.error - 1.0 / 20.0).abs() < 1e-15, "{e:?}");
         assert!((e.deviation - 1.0 / 20f64.sqrt()).abs() < 1e-15, "{e:?}");
         assert_eq!(estimate(1, 0.5, 0.0, 0.0, 0.01).error, f64::INFINITY);
@@ -179,7 +199,10 @@ mod tests {
             let sigma2 = s2 + var_s2.max(0.0).sqrt() + s.mean * s.mean / 64.0;
             (sigma2 / 64.0).sqrt() / s.mean
         };
-        let (c, p) = (calm.estimate(floor), spiky.estimate(floor));
+        let (c, p) = (
+            calm.estimate(floor, ErrorEstimate::Guarded),
+            spiky.estimate(floor, ErrorEstimate::Guarded),
+        );
         assert!((c.error - by_hand(&calm)).abs() < 1e-12, "{c:?}");
         assert!((p.error - by_hand(&spiky)).abs() < 1e-12, "{p:?}");
         assert!((c.deviation / 8.0 - c.error).abs() < 1e-15);
