@@ -222,13 +222,16 @@ fn a_time_budget_gives_the_noisiest_pixels_the_most_samples() {
         "{:?}",
         render.stats.elapsed
     );
-    // The pixels with the largest deviation per sample (error·√n) took more samples than
-    // those with the smallest.
+    // The pixels with the largest deviation per sample took more samples than those with
+    // the smallest: the deviation is the error times √n without the pseudo-sample's 1/n².
     let mut by_deviation: Vec<(f64, u32)> = c
         .samples()
         .iter()
         .zip(c.error())
-        .map(|(&n, &e)| (e * f64::from(n).sqrt(), n))
+        .map(|(&n, &e)| {
+            let n_f = f64::from(n);
+            (((e * e - 1.0 / (n_f * n_f)) * n_f).max(0.0).sqrt(), n)
+        })
         .collect();
     by_deviation.sort_by(|a, b| a.0.total_cmp(&b.0));
     let tenth = by_deviation.len() / 10;

@@ -13,19 +13,19 @@ use crate::material::Scatter;
 use crate::render::batch::Batch;
 use crate::render::progress::{Progress, Round};
 use crate::render::reference::{mean, pixel_stream};
-use crate::render::{Rect, Render, RenderStats, Renderer, Tracer};
+use crate::render::{Render, RenderStats, Renderer, Tracer};
 use crate::scene::Layout;
-use crate::vec3::Color;
 use rand::{Rng, SeedableRng};
 use rayon::prelude::*;
 use std::time::{Duration, Instant};
 
-/// The most samples of one round traced between two looks at the clock: the samples of
-/// a slab are listed, traced in parallel, then added to their pixels in order.
-const SLAB_SAMPLES: usize = 1 << 16;
+/// About the most samples of one round handed to a worker as one task: the task traces,
+/// then adds to its pixels, the samples of a run of consecutive pixels (one pixel alone
+/// may ask for more). Small enough that a round spreads over every thread, large enough
+/// that a task's batches hold a thousand paths.
+const TASK_SAMPLES: usize = 4096;
 
-/// The most paths traced together as one batch, one task of a slab: small enough that a
-/// slab spreads over every thread even when one pixel holds all its samples.
+/// The most paths traced together as one batch.
 const BATCH_PATHS: usize = 1024;
 
 /// With a time budget, each round adds at most this share of the samples taken so far,
@@ -56,20 +56,11 @@ where
     let mut next = vec![adaptive.min_spp; count];
     let progress = Progress::rounds(settings.progress, adaptive, count as u64);
     let (mut rays, mut rounds) = (0u64, 0u32);
-    let mut work = Work::default();
     loop {
         // The first round is always whole: every pixel needs an estimate. Later ones
         // stop where the time runs out.
         let out_of_time = || rounds > 0 && deadline.is_some_and(|d| Instant::now() >= d);
-        let mut from = (0, 0);
-        while from.0 < count && !out_of_time() {
-            let stream = |x, y| pixel_stream(settings, camera, x, y);
-            from = work.list(from, &pixels, &next, tile, stream);
-            rays += work.trace(renderer, camera);
-            for (&owner, &c) in work.owners.iter().zip(&work.colours) {
-                pixels[owner].add(c);
-            }
-        }
+        rays += trace_round(renderer, &mut pixels, &next, &out_of_time);
         rounds += 1;
         let errors: Vec<f64> = pixels
             .iter()
@@ -121,72 +112,107 @@ where
     })
 }
 
-/// One slab of a round: the samples to trace, `(x, y, stream, sample)`, the pixel each
-/// belongs to, and their colours once traced.
-#[derive(Default)]
-struct Work<F> {
-    samples: Vec<(usize, usize, u64, u32)>,
-    owners: Vec<usize>,
-    colours: Vec<Color<F>>,
+/// Traces a round: for each pixel `i`, `next[i]` more samples, added to `pixels[i]` in
+/// sample order. Runs of consecutive pixels with about [`TASK_SAMPLES`] samples are the
+/// tasks, in parallel; each traces its samples in batches and adds them to its own pixels.
+/// Between batches a task stops if `stop()`: a pixel keeps what it has (its samples are
+/// still `0..n`). Returns the rays traced.
+fn trace_round<F, S, M, C, R>(
+    renderer: &Renderer<'_, F, S, M, C, R>,
+    pixels: &mut [PixelStats<F>],
+    next: &[u32],
+    stop: &(impl Fn() -> bool + Sync),
+) -> u64
+where
+    F: Float,
+    S: Layout<F> + Sync,
+    M: Scatter<F, R> + Sync,
+    C: Camera<F> + Sync,
+    R: Rng + SeedableRng,
+{
+    let mut tasks = Vec::new();
+    let (mut rest, mut first) = (pixels, 0);
+    while !rest.is_empty() {
+        let mut len = 1;
+        let mut samples = next[first] as usize;
+        while first + len < next.len() && samples + (next[first + len] as usize) <= TASK_SAMPLES {
+            samples += next[first + len] as usize;
+            len += 1;
+        }
+        let (task, tail) = std::mem::take(&mut rest).split_at_mut(len);
+        if samples > 0 {
+            tasks.push((first, task));
+        }
+        (rest, first) = (tail, first + len);
+    }
+    let (settings, camera, tile) = (&renderer.settings, renderer.camera, renderer.region());
+    tasks
+        .into_par_iter()
+        .map_init(
+            || (Batch::<F, R>::new(), Work::default()),
+            |(batch, work), (first, stats)| {
+                let mut tracer =
+                    Tracer::new(renderer.scene, settings.max_depth).light_sampling(settings.light_sampling);
+                let wanted = &next[first..first + stats.len()];
+                let (mut i, mut listed) = (0, 0);
+                while i < stats.len() && !stop() {
+                    let pixel = |k: usize| {
+                        let k = first + k;
+                        let (x, y) = (tile.x + k % tile.width, tile.y + k / tile.width);
+                        (x, y, pixel_stream(settings, camera, x, y))
+                    };
+                    (i, listed) = work.list((i, listed), stats, wanted, pixel);
+                    let (colours, bounces) = batch.trace_samples(&mut tracer, camera, &work.samples);
+                    for ((&owner, &c), &b) in work.owners.iter().zip(colours).zip(bounces) {
+                        stats[owner].add(c, b);
+                    }
+                }
+                tracer.rays()
+            },
+        )
+        .sum()
 }
 
-impl<F: Float> Work<F> {
-    /// Lists the next slab: from pixel `from.0`, whose first `from.1` samples of this
-    /// round are already traced, the samples `next` asks for, pixel after pixel, until
-    /// [`SLAB_SAMPLES`] are listed. Returns where the slab after it starts.
-    fn list(
+/// A task's batch: the samples to trace, `(x, y, stream, sample)`, and the pixel of the
+/// task each belongs to.
+#[derive(Default)]
+struct Work {
+    samples: Vec<(usize, usize, u64, u32)>,
+    owners: Vec<usize>,
+}
+
+impl Work {
+    /// Lists the next batch: from pixel `from.0`, whose first `from.1` samples of this
+    /// round are traced already, the samples `wanted` asks for, pixel after pixel, until
+    /// [`BATCH_PATHS`] are listed. `pixel(i)` is pixel `i`'s `(x, y, stream)`. Returns
+    /// where the batch after it starts.
+    fn list<F: Float>(
         &mut self,
         (mut i, mut listed): (usize, u32),
-        pixels: &[PixelStats<F>],
-        next: &[u32],
-        tile: Rect,
-        stream: impl Fn(usize, usize) -> u64,
+        stats: &[PixelStats<F>],
+        wanted: &[u32],
+        pixel: impl Fn(usize) -> (usize, usize, u64),
     ) -> (usize, u32) {
         self.samples.clear();
         self.owners.clear();
-        while i < pixels.len() && self.samples.len() < SLAB_SAMPLES {
-            let room = (SLAB_SAMPLES - self.samples.len()) as u32;
-            let take = (next[i] - listed).min(room);
+        while i < stats.len() && self.samples.len() < BATCH_PATHS {
+            let room = (BATCH_PATHS - self.samples.len()) as u32;
+            let take = (wanted[i] - listed).min(room);
             if take > 0 {
-                let (x, y) = (tile.x + i % tile.width, tile.y + i / tile.width);
-                let s = stream(x, y);
-                // Samples 0..n are taken (those of this round's earlier slabs among
-                // them, added already): these follow.
-                let first = pixels[i].n;
+                let (x, y, stream) = pixel(i);
+                // Samples 0..n are taken (this round's earlier batches among them,
+                // added already): these follow.
+                let first = stats[i].n;
                 self.samples
-                    .extend((first..first + take).map(|sample| (x, y, s, sample)));
+                    .extend((first..first + take).map(|sample| (x, y, stream, sample)));
                 self.owners.extend(std::iter::repeat_n(i, take as usize));
             }
             listed += take;
-            if listed == next[i] {
+            if listed == wanted[i] {
                 (i, listed) = (i + 1, 0);
             }
         }
         (i, listed)
-    }
-
-    /// Traces the listed samples in parallel, batches of [`BATCH_PATHS`], into
-    /// `colours`. Returns the rays traced.
-    fn trace<S, M, C, R>(&mut self, renderer: &Renderer<'_, F, S, M, C, R>, camera: &C) -> u64
-    where
-        S: Layout<F> + Sync,
-        M: Scatter<F, R> + Sync,
-        C: Camera<F> + Sync,
-        R: Rng + SeedableRng,
-    {
-        let settings = &renderer.settings;
-        self.colours.clear();
-        self.colours.resize(self.samples.len(), Color::zero());
-        self.samples
-            .par_chunks(BATCH_PATHS)
-            .zip(self.colours.par_chunks_mut(BATCH_PATHS))
-            .map_init(Batch::<F, R>::new, |batch, (samples, colours)| {
-                let mut tracer =
-                    Tracer::new(renderer.scene, settings.max_depth).light_sampling(settings.light_sampling);
-                colours.copy_from_slice(batch.trace_samples(&mut tracer, camera, samples));
-                tracer.rays()
-            })
-            .sum()
     }
 }
 
@@ -224,6 +250,7 @@ fn plan_for_time<F: Float>(
             Candidate {
                 n: p.n,
                 deviation: p.estimate(adaptive.error_floor, adaptive.estimate).deviation,
+                cost: p.cost(),
                 room: if done { 0 } else { p.n.min(adaptive.max_spp - p.n) },
             }
         })

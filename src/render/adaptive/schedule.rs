@@ -39,22 +39,26 @@ pub(super) struct Candidate {
     pub n: u32,
     /// The per-sample relative deviation ([`Estimate::deviation`](super::stats::Estimate)).
     pub deviation: f64,
+    /// What a sample costs, in rays (at least 1).
+    pub cost: f64,
     /// The most samples it may take next (0 once it has met the target or the cap).
     pub room: u32,
 }
 
 /// Shares about `budget` new samples among `pixels`, writing each one's share into
-/// `next`: a pixel's total grows to `λ·deviation` (never shrinks, at most by its room),
-/// `λ` chosen by bisection so the shares add up to the budget, or to all the room there
-/// is if that is less.
+/// `next`: a pixel's total grows to `λ·v/√c` (`v` its deviation, `c` its cost; never
+/// shrinks, at most by its room), `λ` chosen by bisection so the shares add up to the
+/// budget, or to all the room there is if that is less.
 ///
-/// Why `n ∝ deviation`: a pixel with per-sample relative deviation `v` has squared
-/// relative error `v²/n`, so for a total `Σ n` the sum `Σ v²/n` is least when every
-/// pixel's marginal gain `v²/n²` is the same, that is when `n ∝ v`. Each round moves the
-/// totals towards that allocation, so samples go first where they lower the error most.
+/// Why `n ∝ v/√c`: a pixel with per-sample relative deviation `v` has squared relative
+/// error `v²/n` and its `n` samples take time `∝ c·n`, so for a given time the sum
+/// `Σ v²/n` is least when every pixel's gain per unit of time, `v²/(c·n²)`, is the same,
+/// that is when `n ∝ v/√c`. Each round moves the totals towards that allocation, so the
+/// time goes first where it lowers the error most.
 pub(super) fn share(pixels: &[Candidate], budget: u64, next: &mut [u32]) {
+    let weight = |p: &Candidate| p.deviation / p.cost.max(1.0).sqrt();
     let take = |lambda: f64, p: &Candidate| -> u32 {
-        let want = (lambda * p.deviation).ceil() - f64::from(p.n);
+        let want = (lambda * weight(p)).ceil() - f64::from(p.n);
         // NaN compares false and takes nothing; the bounds keep the cast exact.
         if want > 0.0 {
             want.min(f64::from(p.room)) as u32
@@ -66,8 +70,8 @@ pub(super) fn share(pixels: &[Candidate], budget: u64, next: &mut [u32]) {
     // Large enough for every pixel with any deviation to fill its room.
     let mut hi = pixels
         .iter()
-        .filter(|p| p.deviation > 0.0 && p.room > 0)
-        .map(|p| (f64::from(p.n) + f64::from(p.room)) / p.deviation)
+        .filter(|p| weight(p) > 0.0 && p.room > 0)
+        .map(|p| (f64::from(p.n) + f64::from(p.room)) / weight(p))
         .fold(0.0f64, f64::max);
     let mut lo = 0.0f64;
     if total(hi) > budget {
@@ -109,7 +113,12 @@ mod tests {
 
     #[test]
     fn the_budget_goes_where_the_deviation_is() {
-        let p = |n, deviation, room| Candidate { n, deviation, room };
+        let p = |n, deviation, room| Candidate {
+            n,
+            deviation,
+            cost: 1.0,
+            room,
+        };
         let pixels = [p(32, 1.0, 32), p(32, 4.0, 32), p(32, 0.0, 32), p(32, 2.0, 0)];
         let mut next = [0; 4];
         share(&pixels, 24, &mut next);

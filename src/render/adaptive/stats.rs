@@ -28,6 +28,8 @@ pub(super) struct PixelStats<F> {
     m2: f64,
     m3: f64,
     m4: f64,
+    /// The bounces all its paths took: what its samples cost.
+    bounces: u64,
 }
 
 impl<F: Float> PixelStats<F> {
@@ -40,13 +42,15 @@ impl<F: Float> PixelStats<F> {
             m2: 0.0,
             m3: 0.0,
             m4: 0.0,
+            bounces: 0,
         }
     }
 
-    /// Adds the next sample's colour.
+    /// Adds the next sample: its colour and the bounces its path took.
     #[inline]
-    pub fn add(&mut self, colour: Color<F>) {
+    pub fn add(&mut self, colour: Color<F>, bounces: u32) {
         self.sum = self.sum + colour;
+        self.bounces += u64::from(bounces);
         self.n += 1;
         let y = luminance(colour.to_f64());
         // Pébay's one-pass update of the central moments (Sandia report SAND2008-6212,
@@ -64,6 +68,12 @@ impl<F: Float> PixelStats<F> {
         self.m2 += term;
     }
 
+    /// The rays a sample of this pixel has cost on average, counted as its camera ray and
+    /// one per bounce (the shadow rays go with the bounces).
+    pub fn cost(&self) -> f64 {
+        1.0 + self.bounces as f64 / f64::from(self.n.max(1))
+    }
+
     /// The error estimate for the samples so far.
     pub fn estimate(&self, floor: f64, kind: ErrorEstimate) -> Estimate {
         match kind {
@@ -78,8 +88,11 @@ impl<F: Float> PixelStats<F> {
 pub(super) struct Estimate {
     /// The relative standard error of the mean luminance, `σ̂/(√n·max(Ȳ, floor))`.
     pub error: f64,
-    /// The per-sample relative deviation `σ̂/max(Ȳ, floor)`: `error·√n`, what the time
-    /// budget's allocation shares samples by.
+    /// The per-sample relative deviation the samples show, `√(s² + √Var̂(s²))/max(Ȳ, floor)`
+    /// (the estimate without its pseudo-sample): what the time budget's allocation shares
+    /// samples by. The pseudo-sample bounds what the error map may claim; it says nothing
+    /// of where a sample lowers the error most, and in an image of low noise it would
+    /// share the samples out nearly evenly.
     pub deviation: f64,
 }
 
@@ -119,11 +132,11 @@ pub(super) fn estimate(n: u32, mean: f64, m2: f64, m4: f64, floor: f64) -> Estim
     let s2 = m2 / (nf - 1.0);
     let var_s2 = (m4 / nf - s2 * s2 * (nf - 3.0) / (nf - 1.0)) / nf;
     let scale = mean.max(floor);
-    let sigma2 = s2 + var_s2.max(0.0).sqrt() + scale * scale / nf;
-    let deviation = sigma2.max(0.0).sqrt() / scale;
+    let shown = s2 + var_s2.max(0.0).sqrt();
+    let sigma2 = shown + scale * scale / nf;
     Estimate {
-        error: deviation / nf.sqrt(),
-        deviation,
+        error: (sigma2 / nf).max(0.0).sqrt() / scale,
+        deviation: shown.max(0.0).sqrt() / scale,
     }
 }
 
@@ -154,7 +167,7 @@ mod tests {
         let mut stats = PixelStats::<f64>::new();
         for &y in &ys {
             // A grey sample has luminance y: the weights sum to 1.
-            stats.add(Color::new(y, y, y));
+            stats.add(Color::new(y, y, y), 1);
         }
         let n = ys.len() as f64;
         let mean = ys.iter().sum::<f64>() / n;
@@ -164,6 +177,7 @@ mod tests {
         assert!((stats.m3 - m(3)).abs() < 1e-12, "{} {}", stats.m3, m(3));
         assert!((stats.m4 - m(4)).abs() < 1e-12, "{} {}", stats.m4, m(4));
         assert_eq!(stats.n, 8);
+        assert_eq!(stats.cost(), 2.0);
         assert_eq!(stats.sum, Color::splat(ys.iter().sum::<f64>()));
     }
 
@@ -172,12 +186,13 @@ mod tests {
     fn a_constant_pixel_claims_one_over_n() {
         let mut stats = PixelStats::<f64>::new();
         for _ in 0..20 {
-            stats.add(Color::splat(0.5));
+            stats.add(Color::splat(0.5), 3);
         }
         let e = stats.estimate(0.01, ErrorEstimate::Guarded);
         assert_eq!(stats.estimate(0.01, ErrorEstimate::SampleVariance).error, 0.0);
+        assert_eq!(stats.cost(), 4.0);
         assert!((e.error - 1.0 / 20.0).abs() < 1e-15, "{e:?}");
-        assert!((e.deviation - 1.0 / 20f64.sqrt()).abs() < 1e-15, "{e:?}");
+        assert_eq!(e.deviation, 0.0, "{e:?}");
         assert_eq!(estimate(1, 0.5, 0.0, 0.0, 0.01).error, f64::INFINITY);
     }
 
@@ -189,9 +204,9 @@ mod tests {
         let (mut calm, mut spiky) = (PixelStats::<f64>::new(), PixelStats::<f64>::new());
         for k in 0..64 {
             let y = if k % 2 == 0 { 0.4 } else { 0.6 };
-            calm.add(Color::splat(y));
+            calm.add(Color::splat(y), 0);
             // The same values but one replaced by a rare bright one.
-            spiky.add(Color::splat(if k == 40 { 20.0 } else { y }));
+            spiky.add(Color::splat(if k == 40 { 20.0 } else { y }), 0);
         }
         let by_hand = |s: &PixelStats<f64>| {
             let s2 = s.m2 / 63.0;
@@ -205,7 +220,10 @@ mod tests {
         );
         assert!((c.error - by_hand(&calm)).abs() < 1e-12, "{c:?}");
         assert!((p.error - by_hand(&spiky)).abs() < 1e-12, "{p:?}");
-        assert!((c.deviation / 8.0 - c.error).abs() < 1e-15);
+        let shown = |e: f64, s: &PixelStats<f64>| {
+            ((e * s.mean).powi(2) * 64.0 - s.mean * s.mean / 64.0).sqrt() / s.mean
+        };
+        assert!((c.deviation - shown(c.error, &calm)).abs() < 1e-12, "{c:?}");
         // Two values: s⁴·(n−3)/(n−1) is nearly m₄, so the bound adds almost nothing...
         let plain = |s: &PixelStats<f64>| (s.m2 / 63.0 / 64.0 + s.mean * s.mean / 4096.0).sqrt() / s.mean;
         assert!(c.error < 1.01 * plain(&calm), "{c:?}");
