@@ -165,10 +165,13 @@ fn errors(image: &Image, r1: &Image, r2: &Image) -> Errors {
     }
 }
 
-/// The mean of each measure over the runs: `[seconds, spp, rays]` and the errors.
-fn mean(runs: &[([f64; 3], Errors)]) -> ([f64; 3], Errors) {
+/// What one render measured: `[seconds, spp, rays]` and its errors.
+type Measured = ([f64; 3], Errors);
+
+/// The mean of each measure over the runs.
+fn mean(runs: &[Measured]) -> Measured {
     let n = runs.len() as f64;
-    let m = |f: &dyn Fn(&([f64; 3], Errors)) -> f64| runs.iter().map(f).sum::<f64>() / n;
+    let m = |f: &dyn Fn(&Measured) -> f64| runs.iter().map(f).sum::<f64>() / n;
     (
         [m(&|r| r.0[0]), m(&|r| r.0[1]), m(&|r| r.0[2])],
         Errors {

@@ -10,6 +10,7 @@ use super::adaptive::Adaptive;
 use std::time::Duration;
 
 /// What an adaptive render's bar shows after a round.
+#[cfg_attr(not(feature = "progress"), allow(dead_code))]
 pub(super) struct Round {
     /// Rounds done.
     pub number: u32,

@@ -167,7 +167,7 @@ fn pixels_stop_where_their_estimate_meets_the_target_or_the_cap() {
     let c = maps(&render);
     assert_eq!((c.width(), c.height()), (WIDTH, HEIGHT));
     for (i, (&n, &e)) in c.samples().iter().zip(c.error()).enumerate() {
-        assert!(n >= 16 && n <= 512, "pixel {i}: {n} samples");
+        assert!((16..=512).contains(&n), "pixel {i}: {n} samples");
         assert!(e <= 0.02 || n == 512, "pixel {i}: error {e} at {n} samples");
     }
     // Pixels that went on past the first round stopped near the target, not far beyond
