@@ -184,6 +184,33 @@ mod tests {
     }
 
     #[test]
+    fn an_adaptive_render_shows_the_error_falling_round_by_round() {
+        let screen = Screen::default();
+        let target = indicatif::ProgressDrawTarget::term_like(Box::new(screen.clone()));
+        let progress = Progress::rounds_on(&Adaptive::target(0.01), 100, target);
+        let shown = || screen.0.lock().unwrap().clone();
+        assert!(shown().contains("0/100 pixels done"), "{:?}", shown());
+        assert!(shown().contains("first round: 32 samples per pixel, target 1.00 %"), "{:?}", shown());
+        for (number, median, active) in [(1, 0.031, 80), (2, 0.012, 30)] {
+            progress.round(&Round {
+                number,
+                median,
+                p99: 2.0 * median,
+                active,
+                elapsed: Duration::from_millis(100),
+            });
+            // indicatif draws at most every few milliseconds: make it draw now.
+            progress.bar.tick();
+        }
+        let text = shown();
+        assert!(text.contains("20/100 pixels done"), "{text:?}");
+        assert!(text.contains("round 1: error 3.10 % median, 6.20 % 99th pct; 80 pixels sampling"), "{text:?}");
+        assert!(text.contains("70/100 pixels done"), "{text:?}");
+        assert!(text.contains("round 2: error 1.20 % median, 2.40 % 99th pct; 30 pixels sampling"), "{text:?}");
+        progress.finish();
+    }
+
+    #[test]
     fn the_bar_is_drawn_before_the_first_row_is_done() {
         let screen = Screen::default();
         let progress = Progress::drawn(
