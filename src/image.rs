@@ -15,7 +15,9 @@ mod rect;
 mod tile;
 mod tonemap;
 
-pub use self::exr::{write_exr, write_exr_to};
+pub use self::exr::{
+    ExrChannel, ExrValues, write_exr, write_exr_to, write_layered_exr, write_layered_exr_to,
+};
 pub use atomic::write_atomic;
 pub use encoding::Encoding;
 pub use pfm::{parse_pfm, read_pfm, write_pfm, write_pfm_to};

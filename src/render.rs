@@ -2,7 +2,13 @@
 //! path; [`render_reference`] calls it for every sample of every pixel and so defines every
 //! image. [`Renderer::render`] gives the same bytes faster: the paths of a band of pixels
 //! advance together, bounce by bounce (`batch`), on every core (rayon).
+//!
+//! A render may instead spend its samples where the error is ([`adaptive`]: to a target
+//! error, or for a time budget) and report the error each pixel reached, and may add the
+//! feature layers a denoiser takes ([`Aovs`]).
 
+pub mod adaptive;
+mod aov;
 mod batch;
 mod direct;
 mod progress;
@@ -12,6 +18,8 @@ mod settings;
 mod trace;
 
 pub use crate::image::Rect;
+pub use adaptive::{Adaptive, Convergence};
+pub use aov::Aovs;
 pub use reference::render_reference;
 pub use seed::sample_seed;
 pub use settings::{LightSampling, RenderSettings};
@@ -20,7 +28,7 @@ pub use trace::Tracer;
 use crate::camera::Camera;
 use crate::error::Result;
 use crate::float::Float;
-use crate::image::Image;
+use crate::image::{ExrChannel, Image};
 use crate::material::Scatter;
 use crate::sampling::DefaultRng;
 use crate::scene::Layout;
@@ -41,14 +49,45 @@ pub struct Render {
     pub image: Image,
     /// Rays traced and time taken.
     pub stats: RenderStats,
+    /// Each pixel's sample count and estimated error, for an [adaptive](Renderer::adaptive)
+    /// render; `None` for a uniform one.
+    pub convergence: Option<Convergence>,
+    /// The denoiser's feature layers, if [asked for](Renderer::aov).
+    pub aov: Option<Aovs>,
+}
+
+impl Render {
+    /// The render's layers beyond the colour, as EXR channels
+    /// ([`write_layered_exr`](crate::image::write_layered_exr)): `samples.Y` (each pixel's
+    /// sample count) and `error.Y` (its estimated relative error) for an adaptive render;
+    /// `albedo.R/G/B`, `normal.X/Y/Z` and `depth.Z` if the features were rendered.
+    #[must_use]
+    pub fn layers(&self) -> Vec<ExrChannel> {
+        let mut layers = Vec::new();
+        if let Some(c) = &self.convergence {
+            layers.push(ExrChannel::counts("samples.Y", c.samples().to_vec()));
+            layers.push(ExrChannel::floats("error.Y", c.error().iter().copied()));
+        }
+        if let Some(aov) = &self.aov {
+            for (k, name) in ["albedo.R", "albedo.G", "albedo.B"].into_iter().enumerate() {
+                layers.push(ExrChannel::floats(name, aov.albedo().iter().map(|p| p[k])));
+            }
+            for (k, name) in ["normal.X", "normal.Y", "normal.Z"].into_iter().enumerate() {
+                layers.push(ExrChannel::floats(name, aov.normal().iter().map(|p| p[k])));
+            }
+            layers.push(ExrChannel::floats("depth.Z", aov.depth().iter().copied()));
+        }
+        layers
+    }
 }
 
 /// What a render cost.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderStats {
-    /// Rays traced, of every kind: camera, scattered and shadow.
+    /// Rays traced, of every kind: camera, scattered and shadow (and those of the feature
+    /// layers, if asked for).
     pub rays: u64,
-    /// Wall-clock time.
+    /// Wall-clock time (the feature layers' included).
     pub elapsed: Duration,
     /// Worker threads used.
     pub threads: usize,
@@ -111,6 +150,8 @@ pub struct Renderer<'a, F, S, M, C, R = DefaultRng> {
     camera: &'a C,
     settings: RenderSettings,
     tile: Option<Rect>,
+    adaptive: Option<Adaptive>,
+    aov: bool,
     rng: PhantomData<fn() -> R>,
 }
 
@@ -123,6 +164,8 @@ impl<'a, F: Float, S, M, C: Camera<F>> Renderer<'a, F, S, M, C> {
             camera,
             settings: RenderSettings::default(),
             tile: None,
+            adaptive: None,
+            aov: false,
             rng: PhantomData,
         }
     }
@@ -171,6 +214,46 @@ impl<'a, F: Float, S, M, C: Camera<F>, R> Renderer<'a, F, S, M, C, R> {
         self
     }
 
+    /// Samples adaptively, as `adaptive` says ([`adaptive`](mod@adaptive)), instead of
+    /// [`spp`](Renderer::spp) samples in every pixel; `None` goes back to uniform sampling.
+    pub fn adaptive(mut self, adaptive: Option<Adaptive>) -> Self {
+        self.adaptive = adaptive;
+        self
+    }
+
+    /// Samples each pixel until its estimated relative error (of its mean luminance, see
+    /// [`adaptive`](mod@adaptive)) is at most `target_error`, with the other adaptive
+    /// settings as they are (the defaults at first).
+    pub fn target_error(mut self, target_error: f64) -> Self {
+        self.adaptive_mut().target_error = Some(target_error);
+        self
+    }
+
+    /// Samples adaptively for `budget` of wall time at most (with a target error, until
+    /// every pixel meets it if that comes first). The image then depends on the time.
+    pub fn time_budget(mut self, budget: Duration) -> Self {
+        self.adaptive_mut().time_budget = Some(budget);
+        self
+    }
+
+    /// The samples every pixel takes before its error is judged ([`Adaptive::min_spp`]).
+    pub fn min_spp(mut self, min_spp: u32) -> Self {
+        self.adaptive_mut().min_spp = min_spp;
+        self
+    }
+
+    /// The most samples any pixel takes ([`Adaptive::max_spp`]).
+    pub fn max_spp(mut self, max_spp: u32) -> Self {
+        self.adaptive_mut().max_spp = max_spp;
+        self
+    }
+
+    /// Also renders the feature layers a denoiser takes ([`Aovs`]).
+    pub fn aov(mut self, aov: bool) -> Self {
+        self.aov = aov;
+        self
+    }
+
     /// Draws from the generator `G` instead.
     pub fn rng<G: Rng + SeedableRng>(self) -> Renderer<'a, F, S, M, C, G> {
         Renderer {
@@ -178,8 +261,14 @@ impl<'a, F: Float, S, M, C: Camera<F>, R> Renderer<'a, F, S, M, C, R> {
             camera: self.camera,
             settings: self.settings,
             tile: self.tile,
+            adaptive: self.adaptive,
+            aov: self.aov,
             rng: PhantomData,
         }
+    }
+
+    fn adaptive_mut(&mut self) -> &mut Adaptive {
+        self.adaptive.get_or_insert_with(Adaptive::empty)
     }
 
     fn region(&self) -> Rect {
@@ -197,11 +286,47 @@ where
     R: Rng + SeedableRng,
 {
     /// Renders on the current rayon thread pool, bands of rows in parallel, each band's
-    /// paths batched: the bytes of [`render_reference`], on any number of threads.
+    /// paths batched: the bytes of [`render_reference`], on any number of threads. An
+    /// adaptive render ([`Renderer::adaptive`]) is the same bytes on any number of threads
+    /// and in any tiling too, unless it has a time budget.
     ///
     /// # Errors
     /// Invalid settings, or a tile outside the camera's image.
     pub fn render(&self) -> Result<Render> {
+        let start = Instant::now();
+        let mut render = match &self.adaptive {
+            Some(adaptive) => adaptive::render_adaptive(self, adaptive)?,
+            None => self.render_uniform()?,
+        };
+        if self.aov {
+            let spp = self.settings.samples_per_pixel;
+            let (aov, rays) = match &render.convergence {
+                Some(c) => {
+                    let samples = |i: usize| c.samples()[i];
+                    self.features(&samples, true)
+                }
+                None => self.features(&|_| spp, spp > 1),
+            };
+            render.aov = Some(aov);
+            render.stats.rays += rays;
+            render.stats.elapsed = start.elapsed();
+        }
+        Ok(render)
+    }
+
+    /// The feature layers, each pixel over `samples(i)` samples.
+    fn features(&self, samples: &(dyn Fn(usize) -> u32 + Sync), jitter: bool) -> (Aovs, u64) {
+        aov::render_aov::<R, F, S, M, C>(
+            self.scene,
+            self.camera,
+            &self.settings,
+            self.region(),
+            (samples, jitter),
+        )
+    }
+
+    /// [`Renderer::render`] with the same number of samples in every pixel.
+    fn render_uniform(&self) -> Result<Render> {
         let (settings, camera, tile) = (&self.settings, self.camera, self.region());
         settings.validate()?;
         tile.check_inside(camera.width(), camera.height())?;
@@ -230,10 +355,13 @@ where
                 elapsed: start.elapsed(),
                 threads: rayon::current_num_threads(),
             },
+            convergence: None,
+            aov: None,
         })
     }
 
-    /// Renders with [`render_reference`]: pixel by pixel on the calling thread.
+    /// Renders with [`render_reference`]: pixel by pixel on the calling thread, uniformly
+    /// (the adaptive settings and the feature layers are not its business).
     ///
     /// # Errors
     /// As [`Renderer::render`].

@@ -220,6 +220,34 @@ pub fn area_lights<F: Float>() -> raytrace::Result<EnumScene<F>> {
     Ok(scene)
 }
 
+/// A caustic: a glass sphere on a matte floor, lit only by a small, bright spherical lamp
+/// above and behind it under a near-black sky, for the spec's camera. The sphere focuses
+/// the lamp into a bright spot on the floor in front of it, inside its own shadow. The
+/// spot's light is found only by paths that leave the floor in a random direction,
+/// cross the glass and happen to meet the lamp (a shadow ray toward the lamp is blocked by
+/// the glass): rare, bright paths, the hard case for an estimate of a pixel's error.
+pub fn caustic<F: Float>() -> raytrace::Result<EnumScene<F>> {
+    let v = |x, y, z| Vec3::<F>::from_f64(x, y, z);
+    let mut scene = EnumScene::new(Background::solid(v(0.002, 0.002, 0.003))?);
+    scene.add(
+        Plane::new(v(0.0, -0.8, 0.0), v(0.0, 1.0, 0.0))?,
+        Lambertian::new(v(0.7, 0.7, 0.65))?,
+    );
+    scene.add(
+        Sphere::new(v(0.0, -0.2, -3.5), lit(0.6))?,
+        Dielectric::new(lit(1.5))?,
+    );
+    scene.add(
+        Sphere::new(v(1.6, -0.45, -4.2), lit(0.35))?,
+        Lambertian::new(v(0.3, 0.45, 0.7))?,
+    );
+    scene.add(
+        Sphere::new(v(0.7, 1.6, -4.4), lit(0.15))?,
+        Emissive::new(v(300.0, 270.0, 220.0))?,
+    );
+    Ok(scene)
+}
+
 /// The Cornell box of `scenes/cornell_box.toml` (Mitsuba 3's), `width` pixels square, its
 /// scene and camera in `F`, and its render settings.
 pub fn cornell_box<F: Float>(

@@ -60,6 +60,10 @@ pub(super) struct Batch<F, R> {
     logs: Vec<Vec<Bounce<F>>>,
     /// Each path's colour where it ended (background, black, or its last direct light).
     ends: Vec<Color<F>>,
+    /// The bounces the last trace took (the logs beyond are stale).
+    depth: usize,
+    /// For [`Batch::trace_samples`] only: each path's bounces.
+    bounces: Vec<u32>,
 }
 
 impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
@@ -78,6 +82,8 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             near: Nearests::default(),
             logs: Vec::new(),
             ends: Vec::new(),
+            depth: 0,
+            bounces: Vec::new(),
         }
     }
 
@@ -115,7 +121,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             self.rays.clear();
             self.pixels.clear();
             for (i, (&(x, y, _), rng)) in self.pixels_at.iter().zip(&mut self.rngs).enumerate() {
-                self.rays.push(camera_ray(camera, x, y, spp, rng));
+                self.rays.push(camera_ray(camera, x, y, spp > 1, rng));
                 self.pixels.push(i as u32);
             }
             self.arrivals.clear();
@@ -128,6 +134,47 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         for (o, &sum) in out.iter_mut().zip(&self.sums) {
             *o = mean(sum, spp).to_f64();
         }
+    }
+
+    /// Traces one sample of each of `samples`, `(x, y, stream, sample)`: sample `sample`
+    /// of the pixel at `(x, y)` with random stream `stream`, its camera ray jittered in
+    /// the pixel. Returns their colours, in the same order (each the colour the reference
+    /// renderer's recursion gives that sample), and the bounces each path took: what a
+    /// sample of that pixel costs.
+    pub(super) fn trace_samples<S, M, C>(
+        &mut self,
+        tracer: &mut Tracer<'_, F, S, M>,
+        camera: &C,
+        samples: &[(usize, usize, u64, u32)],
+    ) -> (&[Color<F>], &[u32])
+    where
+        S: Layout<F>,
+        M: Scatter<F, R>,
+        C: Camera<F>,
+    {
+        self.rngs.clear();
+        self.rngs.extend(
+            samples
+                .iter()
+                .map(|&(_, _, stream, sample)| sample_rng(stream, sample)),
+        );
+        self.rays.clear();
+        self.pixels.clear();
+        for (i, (&(x, y, _, _), rng)) in samples.iter().zip(&mut self.rngs).enumerate() {
+            self.rays.push(camera_ray(camera, x, y, true, rng));
+            self.pixels.push(i as u32);
+        }
+        self.arrivals.clear();
+        self.arrivals.resize(self.rays.len(), Arrival::Unweighted);
+        self.trace(tracer);
+        self.bounces.clear();
+        self.bounces.resize(samples.len(), 0);
+        for log in &self.logs[..self.depth] {
+            for b in log {
+                self.bounces[b.pixel as usize] += 1;
+            }
+        }
+        (&self.ends, &self.bounces)
     }
 
     /// Traces the started paths to their ends and leaves each pixel's colour in `ends`.
@@ -179,6 +226,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             std::mem::swap(&mut self.arrivals, &mut self.next_arrivals);
             depth += 1;
         }
+        self.depth = depth;
         // Each path's bounces fold back from its last: bounce by bounce from the deepest,
         // each entry updating its path's colour.
         for log in self.logs[..depth].iter().rev() {

@@ -48,7 +48,7 @@ where
         let mut sum = Color::zero();
         for sample in 0..settings.samples_per_pixel {
             let mut rng: R = sample_rng(stream, sample);
-            let ray = camera_ray(camera, x, y, settings.samples_per_pixel, &mut rng);
+            let ray = camera_ray(camera, x, y, settings.samples_per_pixel > 1, &mut rng);
             sum = sum + tracer.trace(&ray, 0, &mut rng);
         }
         *out = mean(sum, settings.samples_per_pixel).to_f64();
@@ -60,6 +60,8 @@ where
             elapsed: start.elapsed(),
             threads: 1,
         },
+        convergence: None,
+        aov: None,
     })
 }
 
@@ -83,27 +85,28 @@ pub(super) fn sample_rng<R: SeedableRng>(stream: u64, sample: u32) -> R {
     R::seed_from_u64(seed::seed_in_stream(stream, u64::from(sample)))
 }
 
-/// A sample's camera ray: with one sample per pixel through the pixel centre (the spec's
-/// basic mode), with more through a uniform random point of the pixel's cell; from a
-/// uniform point of the lens for a camera that [has one](Camera::has_lens).
+/// A sample's camera ray: through a uniform random point of the pixel's cell if
+/// `jitter` (more than one sample per pixel), else through the pixel centre (the spec's
+/// basic mode, one sample per pixel); from a uniform point of the lens for a camera that
+/// [has one](Camera::has_lens).
 ///
-/// The sample's generator gives, in this order, the pixel jitter's two numbers (with more
-/// than one sample per pixel), then the lens's two (with a lens), then the path's: a
-/// pinhole camera draws exactly what it always has.
+/// The sample's generator gives, in this order, the pixel jitter's two numbers (if
+/// `jitter`), then the lens's two (with a lens), then the path's: a pinhole camera draws
+/// exactly what it always has.
 #[inline]
 pub(super) fn camera_ray<F: Float, R: Rng + ?Sized>(
     camera: &impl Camera<F>,
     x: usize,
     y: usize,
-    spp: u32,
+    jitter: bool,
     rng: &mut R,
 ) -> Ray<F> {
     let (x, y) = (lit::<F>(x as f64), lit::<F>(y as f64));
-    let (x, y) = if spp == 1 {
-        (x, y)
-    } else {
+    let (x, y) = if jitter {
         let (dx, dy) = pixel_jitter(rng);
         (x + lit(dx), y + lit(dy))
+    } else {
+        (x, y)
     };
     if camera.has_lens() {
         let lens = [uniform(rng), uniform(rng)];

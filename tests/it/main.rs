@@ -15,9 +15,13 @@ mod parts;
 mod scenes;
 mod textured_scene;
 
+mod adaptive;
+mod adaptive_calibration;
+mod adaptive_cli;
 mod adversarial_files;
 mod adversarial_scenes;
 mod advice;
+mod aov;
 mod bad_input;
 mod bsdf_chi2;
 mod bsdf_consistency;

@@ -1,10 +1,12 @@
 //! The command line: `raytrace render | check | advise | merge`.
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
+use clap::{ArgGroup, Args, Parser, Subcommand, ValueEnum};
 use raytrace::RenderSettings;
 use raytrace::cli::parse_threads;
 use raytrace::image::ToneCurve;
+use raytrace::render::Adaptive;
 use std::path::PathBuf;
+use std::time::Duration;
 
 /// Renders scene files (TOML; the format: docs/SCENE_FORMAT.md).
 #[derive(Debug, Parser)]
@@ -36,6 +38,7 @@ pub enum Command {
 
 /// `raytrace render`.
 #[derive(Debug, Args)]
+#[command(group(ArgGroup::new("adaptive").args(["target_error", "time_budget"]).multiple(true)))]
 pub struct RenderArgs {
     /// The scene file.
     pub scene: PathBuf,
@@ -43,8 +46,33 @@ pub struct RenderArgs {
     #[arg(long, value_name = "W", value_parser = clap::value_parser!(u64).range(1..))]
     pub width: Option<u64>,
     /// Samples (rays) per pixel [default: the scene's]
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..), conflicts_with = "adaptive")]
     pub spp: Option<u32>,
+    /// Sample each pixel until the relative standard error of its mean luminance is at
+    /// most E (0.01 or 1%), measured against a floor for dark pixels (--error-floor)
+    #[arg(long, value_name = "E", value_parser = parse_error, allow_negative_numbers = true)]
+    pub target_error: Option<f64>,
+    /// Sample adaptively for this long (90, 90s, 1.5m, 2h, 500ms), where the error is
+    /// largest; the image then depends on the time
+    #[arg(long, value_name = "T", value_parser = parse_duration, allow_hyphen_values = true)]
+    pub time_budget: Option<Duration>,
+    /// With --target-error or --time-budget: samples every pixel takes first
+    #[arg(long, value_name = "N", requires = "adaptive", default_value_t = Adaptive::DEFAULT_MIN_SPP,
+          value_parser = clap::value_parser!(u32).range(i64::from(Adaptive::MIN_SPP)..))]
+    pub min_spp: u32,
+    /// With --target-error or --time-budget: samples no pixel goes beyond
+    #[arg(long, value_name = "N", requires = "adaptive", default_value_t = Adaptive::DEFAULT_MAX_SPP,
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub max_spp: u32,
+    /// With --target-error or --time-budget: the luminance below which a pixel's error is
+    /// measured in absolute terms
+    #[arg(long, value_name = "Y", requires = "adaptive", default_value_t = Adaptive::DEFAULT_FLOOR,
+          value_parser = parse_error, allow_negative_numbers = true)]
+    pub error_floor: f64,
+    /// Also write a denoiser's feature layers (albedo, shading normal, first-hit depth)
+    /// into the EXR (or, for another format, into NAME.layers.exr beside the image)
+    #[arg(long)]
+    pub aov: bool,
     /// Most bounces per path, 0 to 1000 [default: the scene's]
     #[arg(long, value_name = "D", value_parser = clap::value_parser!(u32).range(0..=i64::from(RenderSettings::MAX_DEPTH)))]
     pub max_depth: Option<u32>,
@@ -180,6 +208,42 @@ impl TonemapArg {
     }
 }
 
+/// A number `> 0`, finite, written plainly (`0.01`) or as a percentage (`1%`).
+fn parse_error(s: &str) -> Result<f64, String> {
+    let (number, scale) = match s.trim().strip_suffix('%') {
+        Some(n) => (n, 0.01),
+        None => (s.trim(), 1.0),
+    };
+    let v: f64 = number
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number (for example 0.01 or 1%)"))?;
+    let v = v * scale;
+    if !(v.is_finite() && v > 0.0) {
+        return Err(format!("must be a finite number > 0 (got {s})"));
+    }
+    Ok(v)
+}
+
+/// A duration: seconds (`90`, `90s`, `1.5`), milliseconds (`500ms`), minutes (`1.5m`) or
+/// hours (`2h`); longer than zero, at most a year.
+fn parse_duration(s: &str) -> Result<Duration, String> {
+    let t = s.trim();
+    let (number, unit) = [("ms", 0.001), ("s", 1.0), ("m", 60.0), ("h", 3600.0)]
+        .into_iter()
+        .find_map(|(suffix, unit)| t.strip_suffix(suffix).map(|n| (n, unit)))
+        .unwrap_or((t, 1.0));
+    let v: f64 = number
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a duration (for example 90, 90s, 1.5m, 2h, 500ms)"))?;
+    let seconds = v * unit;
+    if !(seconds.is_finite() && seconds > 0.0 && seconds <= 365.0 * 86_400.0) {
+        return Err(format!("must be longer than 0 s and at most a year (got {s})"));
+    }
+    Ok(Duration::from_secs_f64(seconds))
+}
+
 /// `K/N` with `1 ≤ K ≤ N`.
 fn parse_tile(s: &str) -> Result<(usize, usize), String> {
     let (k, n) = s
@@ -212,6 +276,49 @@ mod tests {
         assert_eq!(parse_tile("2/4"), Ok((2, 4)));
         for bad in ["0/4", "5/4", "1/0", "2", "a/4", "2/-1", ""] {
             assert!(parse_tile(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn errors_and_durations_parse_and_reject() {
+        assert_eq!(parse_error("0.01"), Ok(0.01));
+        assert_eq!(parse_error("2%"), Ok(0.02));
+        assert_eq!(parse_error(" 0.5 % "), Ok(0.005));
+        for bad in ["0", "-0.01", "nan", "inf", "%", "x", "1e400", "-1%"] {
+            assert!(parse_error(bad).is_err(), "{bad}");
+        }
+        assert_eq!(parse_duration("90"), Ok(Duration::from_secs(90)));
+        assert_eq!(parse_duration("90s"), Ok(Duration::from_secs(90)));
+        assert_eq!(parse_duration("1.5m"), Ok(Duration::from_secs(90)));
+        assert_eq!(parse_duration("2h"), Ok(Duration::from_secs(7200)));
+        assert_eq!(parse_duration("500ms"), Ok(Duration::from_millis(500)));
+        for bad in ["0", "-5s", "nan", "s", "5 minutes", "1e30", "inf"] {
+            assert!(parse_duration(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn adaptive_options_go_together() {
+        let parse = |args: &[&str]| Cli::try_parse_from([&["raytrace", "render", "s.toml"], args].concat());
+        let cli = parse(&["--target-error", "1%", "--max-spp", "256"]).unwrap();
+        let Command::Render(a) = cli.command else {
+            panic!("{cli:?}")
+        };
+        assert_eq!((a.target_error, a.min_spp, a.max_spp), (Some(0.01), 32, 256));
+        assert!(parse(&["--time-budget", "10s", "--target-error", "0.02"]).is_ok());
+        for bad in [
+            &["--spp", "16", "--target-error", "0.01"][..],
+            &["--spp", "16", "--time-budget", "5"],
+            &["--min-spp", "64"],
+            &["--max-spp", "64"],
+            &["--error-floor", "0.1"],
+            &["--target-error", "0.01", "--min-spp", "8"],
+            &["--target-error", "-0.01"],
+            &["--time-budget", "0s"],
+            &["--time-budget", "-5s"],
+        ] {
+            let err = parse(bad).unwrap_err();
+            assert_eq!(err.exit_code(), 2, "{bad:?}: {err}");
         }
     }
 

@@ -16,6 +16,8 @@
 mod args;
 mod inputs;
 mod inspect;
+mod layers;
+mod names;
 mod output;
 mod render;
 

@@ -3,13 +3,16 @@
 
 use crate::args::{Command, EncodingArg, Format, MergeArgs, RenderArgs};
 use crate::inputs;
+use crate::layers;
+use crate::names::{TILE_EXTENSION, adaptive_of, default_name};
 use raytrace::advice::Precision;
 use raytrace::cli::{check_output, set_activity, write_file};
 use raytrace::image::{
-    Encoding, TileHeader, ToneCurve, Tonemap, merge_tiles, read_tile, write_exr, write_exr_to, write_pfm,
-    write_pfm_to, write_png, write_png_to, write_ppm, write_ppm_to, write_tile, write_tile_to,
+    Encoding, ExrChannel, TileHeader, Tonemap, merge_tiles, read_tile, write_exr, write_exr_to,
+    write_layered_exr, write_layered_exr_to, write_pfm, write_pfm_to, write_png, write_png_to, write_ppm,
+    write_ppm_to, write_tile, write_tile_to,
 };
-use raytrace::scene_file::{RenderOptions, SceneFile};
+use raytrace::scene_file::SceneFile;
 use raytrace::{Error, Image, Result};
 use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -27,12 +30,14 @@ pub struct Target {
     tonemap: Tonemap,
     /// The files the command reads, which the output must not replace.
     inputs: Vec<PathBuf>,
+    /// Where the render's layers go beside an image whose format holds none.
+    layers: Option<PathBuf>,
     /// Show a spinner on stderr while writing (when it is a terminal).
     spinner: bool,
 }
 
 impl Target {
-    /// The output of `raytrace render`: `--out`, or [`default_name`].
+    /// The output of `raytrace render`: `--out`, or [`default_name`](crate::names::default_name).
     pub fn for_render(args: &RenderArgs, file: &SceneFile, precision: Precision) -> Result<Self> {
         let encoding = encoding(args.encoding);
         let tonemap = file.tonemap()?;
@@ -44,6 +49,9 @@ impl Target {
             .out
             .clone()
             .unwrap_or_else(|| default_name(args, file, precision, format, tonemap));
+        let has_layers = adaptive_of(args).is_some() || args.aov;
+        let layers = (has_layers && !matches!(format, None | Some(Format::Exr)) && path != Path::new("-"))
+            .then(|| layers::beside(&path));
         set_activity(format!(
             "rendering {} for {}",
             file.path().display(),
@@ -55,6 +63,7 @@ impl Target {
             encoding,
             tonemap,
             inputs: inputs::of_scene(file),
+            layers,
             spinner: !args.quiet,
         })
     }
@@ -80,17 +89,34 @@ impl Target {
             check_output(&self.path)?;
             &self.path
         };
-        match inputs::overwritten(out, &self.inputs) {
-            Some(input) => Err(refuse(format!(
+        if let Some(input) = inputs::overwritten(out, &self.inputs) {
+            return Err(refuse(format!(
                 "--out names {}, which this command reads: refusing to overwrite an input",
                 input.display()
-            ))),
-            None => Ok(()),
+            )));
         }
+        if let Some(beside) = &self.layers {
+            check_output(beside)?;
+            if let Some(input) = inputs::overwritten(beside, &self.inputs) {
+                return Err(Error::Io {
+                    path: beside.clone(),
+                    source: io::Error::new(
+                        io::ErrorKind::InvalidInput,
+                        format!(
+                            "the layers file beside --out would be {}, which this command reads",
+                            input.display()
+                        ),
+                    ),
+                });
+            }
+        }
+        Ok(())
     }
 
-    /// Writes `image` in the target's format.
-    pub fn write_image(&self, image: &Image) -> Result<()> {
+    /// Writes `image` in the target's format, and its `layers` (if any) into the same EXR
+    /// or [beside](layers::beside) an image of another format. Returns the layers file
+    /// written beside it, if one was.
+    pub fn write_image(&self, image: &Image, layers: &[ExrChannel]) -> Result<Option<PathBuf>> {
         let format = self
             .format
             .ok_or_else(|| usage("a tile target holds a tile, not an image"))?;
@@ -101,6 +127,14 @@ impl Target {
         self.write(format.extension(), |out| match (format, out) {
             (Format::Ppm, Out::File(p)) => write_ppm(p, &samples()),
             (Format::Png, Out::File(p)) => write_png(p, &samples(), e),
+            (Format::Exr, Out::File(p)) if !layers.is_empty() => write_layered_exr(p, image, layers),
+            (Format::Exr, Out::Stdout(w)) if !layers.is_empty() => {
+                let mut bytes = io::Cursor::new(Vec::new());
+                stdout(
+                    write_layered_exr_to(&mut bytes, image, layers)
+                        .and_then(|()| w.write_all(bytes.get_ref())),
+                )
+            }
             (Format::Exr, Out::File(p)) => write_exr(p, image),
             (Format::Pfm, Out::File(p)) => write_pfm(p, image),
             (Format::Ppm, Out::Stdout(w)) => stdout(write_ppm_to(w, &samples())),
@@ -111,7 +145,14 @@ impl Target {
                 stdout(write_exr_to(&mut bytes, image).and_then(|()| w.write_all(bytes.get_ref())))
             }
             (Format::Pfm, Out::Stdout(w)) => stdout(write_pfm_to(w, image)),
-        })
+        })?;
+        match &self.layers {
+            Some(_) if !layers.is_empty() => {
+                set_activity(format!("writing the layers beside {}", shown(&self.path)));
+                layers::write_beside(&self.path, image, layers).map(Some)
+            }
+            _ => Ok(None),
+        }
     }
 
     /// Writes a tile file.
@@ -211,6 +252,7 @@ pub fn merge(args: &MergeArgs) -> Result<()> {
         encoding: encoding(args.encoding),
         tonemap,
         inputs: args.tiles.clone(),
+        layers: None,
         spinner: !args.quiet,
     };
     set_activity(format!(
@@ -225,7 +267,7 @@ pub fn merge(args: &MergeArgs) -> Result<()> {
         .map(|p| read_tile(p))
         .collect::<Result<Vec<_>>>()?;
     let image = merge_tiles(&tiles)?;
-    target.write_image(&image)?;
+    target.write_image(&image, &[])?;
     target.say(&format!(
         "wrote {}: {}×{} pixels from {} tiles",
         shown(&target.path),
@@ -236,64 +278,32 @@ pub fn merge(args: &MergeArgs) -> Result<()> {
     Ok(())
 }
 
-/// The settings that make an image what it is, in words: the tile files carry them, and
-/// the merge checks that they agree.
-pub fn describe(r: &RenderOptions, precision: Precision) -> String {
-    format!(
-        "width {}, {} spp, max depth {}, seed {}, {precision}",
-        r.width, r.spp, r.max_depth, r.seed
-    )
-}
-
 pub use inputs::scene_hash;
 
-/// The name of a render without `--out`: the scene's, then every setting that changes the
-/// file's bytes (`-linear`, the exposure and the tone curve only where the format stores a
-/// picture), so renders with other settings do not overwrite each other:
-/// `matte_spheres-w800-16spp-d10-seed0-f32.png`, `…-f64-linear.ppm`,
-/// `…-f64-ev1.5-aces.png`, `…-f64-tile2of4.rtile`. `format` is `None` for a tile.
-fn default_name(
-    args: &RenderArgs,
-    file: &SceneFile,
-    precision: Precision,
-    format: Option<Format>,
-    tonemap: Tonemap,
-) -> PathBuf {
-    let name = args
-        .scene
-        .file_stem()
-        .map_or_else(|| "render".into(), |s| s.to_string_lossy().into_owned());
-    let r = file.render();
-    let mut name = format!(
-        "{name}-w{}-{}spp-d{}-seed{}-{precision}",
-        r.width, r.spp, r.max_depth, r.seed
-    );
-    match (format, args.tile) {
-        (Some(f), _) => {
-            let picture = matches!(f, Format::Ppm | Format::Png);
-            if picture && args.encoding == EncodingArg::Linear {
-                name.push_str("-linear");
-            }
-            if picture && tonemap.exposure() != 0.0 {
-                name.push_str(&format!("-ev{}", tonemap.exposure()));
-            }
-            if picture && tonemap.curve() == ToneCurve::Aces {
-                name.push_str("-aces");
-            }
-            name.push('.');
-            name.push_str(f.extension());
-        }
-        (None, Some((k, n))) => name.push_str(&format!("-tile{k}of{n}.{TILE_EXTENSION}")),
-        (None, None) => unreachable!("a render without a format writes a tile"),
-    }
-    PathBuf::from(name)
-}
-
-/// The extension of tile files.
-const TILE_EXTENSION: &str = "rtile";
-
-/// The usage mistakes clap cannot see: an output format that contradicts the output's name.
+/// The usage mistakes clap cannot see: an output format that contradicts the output's
+/// name, adaptive limits that contradict each other, feature layers where none can go.
 pub fn check_usage(command: &Command) -> Result<(), String> {
+    if let Command::Render(args) = command {
+        if adaptive_of(args).is_some() && args.max_spp < args.min_spp {
+            return Err(format!(
+                "--max-spp {} is below --min-spp {}: the most samples a pixel may take must be at \
+                 least the number every pixel takes first",
+                args.max_spp, args.min_spp
+            ));
+        }
+        if args.aov && args.tile.is_some() {
+            return Err("--aov does not apply to --tile: a tile file holds only the colour".into());
+        }
+        let to_stdout = args.out.as_deref() == Some(Path::new("-"));
+        let exr = format_for(args.format, args.out.as_deref(), Format::Png) == Ok(Format::Exr);
+        if args.aov && to_stdout && !exr {
+            return Err(
+                "--aov with --out - needs --format exr: the layers go into the EXR, and there is no \
+                 file beside standard output"
+                    .into(),
+            );
+        }
+    }
     match command {
         Command::Render(args) if args.tile.is_some() => {
             if args.format.is_some() {

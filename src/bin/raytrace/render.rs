@@ -2,6 +2,7 @@
 
 use crate::Failure;
 use crate::args::{PrecisionArg, RenderArgs};
+use crate::names;
 use crate::output::{self, Target};
 use raytrace::advice::Precision;
 use raytrace::cli::check_memory;
@@ -42,9 +43,11 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
         Precision::F32 => render_in::<f32>(file, args),
         Precision::F64 => render_in::<f64>(file, args),
     })?;
-    let settings = output::describe(file.render(), precision);
+    let adaptive = names::adaptive_of(args);
+    let settings = names::describe(file.render(), adaptive.as_ref(), precision);
+    let mut beside = None;
     match args.tile {
-        None => target.write_image(&render.image)?,
+        None => beside = target.write_image(&render.image, &render.layers())?,
         Some(_) => {
             let header = TileHeader {
                 scene: hash.transpose()?.unwrap_or_default(),
@@ -63,6 +66,14 @@ fn render(args: &RenderArgs, file: &SceneFile) -> Result<()> {
         render.image.height(),
         render.stats
     ));
+    if let Some(c) = &render.convergence {
+        target.say(&c.summary().to_string());
+    }
+    if let Some(path) = beside {
+        target.say(&format!("wrote {}: the layers", path.display()));
+    } else if render.convergence.is_some() && args.tile.is_none() && target.name() == "standard output" {
+        eprintln!("note: the sample-count and error maps are not written: --out - is not an EXR");
+    }
     Ok(())
 }
 
@@ -141,6 +152,8 @@ fn render_in<F: Float>(file: &SceneFile, args: &RenderArgs) -> Result<(Render, (
     settings.progress = !args.quiet;
     let render = Renderer::new(&built.scene, &built.camera)
         .settings(settings)
+        .adaptive(names::adaptive_of(args))
+        .aov(args.aov)
         .tile(tile)
         .render()?;
     Ok((render, (width, height)))
