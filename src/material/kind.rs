@@ -46,6 +46,10 @@ pub enum MaterialKind<F> {
 }
 
 /// `match` on a [`MaterialKind`], the same call on every variant: no arm can be left out.
+///
+/// With `; shared`, the materials stored behind an `Arc` all take the `shared` arm, which
+/// calls one out-of-line function: the spec's materials stay inlined into the renderer's
+/// loop without the others' code growing it past what the compiler inlines.
 macro_rules! each_material {
     ($material:expr, $m:ident => $call:expr) => {
         match $material {
@@ -63,37 +67,95 @@ macro_rules! each_material {
             MaterialKind::TwoSided($m) => $call,
         }
     };
+    ($material:expr, $m:ident => $inline:expr; $shared:expr) => {
+        match $material {
+            MaterialKind::Mirror($m) => $inline,
+            MaterialKind::Lambertian($m) => $inline,
+            MaterialKind::Dielectric($m) => $inline,
+            MaterialKind::Emissive($m) => $inline,
+            MaterialKind::NormalMap(_)
+            | MaterialKind::Conductor(_)
+            | MaterialKind::RoughConductor(_)
+            | MaterialKind::RoughDielectric(_)
+            | MaterialKind::ThinDielectric(_)
+            | MaterialKind::Plastic(_)
+            | MaterialKind::RoughPlastic(_)
+            | MaterialKind::TwoSided(_) => $shared,
+        }
+    };
 }
 
-// Dispatch always inlined: a call per light and per bounce otherwise, with the hit in
-// memory.
+// Dispatch always inlined for the spec's materials: a call per light and per bounce
+// otherwise, with the hit in memory.
 impl<F: Float> Material<F> for MaterialKind<F> {
     #[inline(always)]
     fn lobes(&self) -> Lobes {
-        each_material!(self, m => m.lobes())
+        each_material!(self, m => m.lobes(); self.shared().lobes())
     }
     #[inline(always)]
     fn reads_coordinates(&self) -> bool {
-        each_material!(self, m => m.reads_coordinates())
+        each_material!(self, m => m.reads_coordinates(); self.shared().reads_coordinates())
     }
     #[inline(always)]
     fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
-        each_material!(self, m => m.eval(hit, wo, wi))
+        each_material!(self, m => m.eval(hit, wo, wi); self.shared().eval(hit, wo, wi))
     }
     #[inline(always)]
     fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
-        each_material!(self, m => m.pdf(hit, wo, wi))
+        each_material!(self, m => m.pdf(hit, wo, wi); self.shared().pdf(hit, wo, wi))
     }
     #[inline(always)]
     fn emits(&self) -> Option<Emission<F>> {
-        each_material!(self, m => m.emits())
+        each_material!(self, m => m.emits(); self.shared().emits())
     }
 }
 
 impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for MaterialKind<F> {
     #[inline(always)]
     fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
-        each_material!(self, m => m.sample(hit, wo, rng))
+        each_material!(self, m => m.sample(hit, wo, rng); Shared(self).sample(hit, wo, rng))
+    }
+}
+
+/// A [`MaterialKind`] asked out of line: every method one call that matches on every
+/// variant (the spec's too, so no arm is left out, though [`MaterialKind`] sends only the
+/// others here).
+struct Shared<'a, F>(&'a MaterialKind<F>);
+
+impl<F: Float> MaterialKind<F> {
+    #[inline(always)]
+    fn shared(&self) -> Shared<'_, F> {
+        Shared(self)
+    }
+}
+
+impl<F: Float> Material<F> for Shared<'_, F> {
+    #[inline(never)]
+    fn lobes(&self) -> Lobes {
+        each_material!(self.0, m => m.lobes())
+    }
+    #[inline(never)]
+    fn reads_coordinates(&self) -> bool {
+        each_material!(self.0, m => m.reads_coordinates())
+    }
+    #[inline(never)]
+    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        each_material!(self.0, m => m.eval(hit, wo, wi))
+    }
+    #[inline(never)]
+    fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
+        each_material!(self.0, m => m.pdf(hit, wo, wi))
+    }
+    #[inline(never)]
+    fn emits(&self) -> Option<Emission<F>> {
+        each_material!(self.0, m => m.emits())
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Shared<'_, F> {
+    #[inline(never)]
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+        each_material!(self.0, m => m.sample(hit, wo, rng))
     }
 }
 
