@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders the README's pictures into docs/images/: every example at its default settings,
 # four_mirrors 800 pixels wide and the others 400, the Cornell box scene file, and the
-# dragon scene file (its mesh comes from tools/fetch_meshes.sh).
+# dragon scene file (its mesh comes from tools/fetch_meshes.sh), and the materials example.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=$(mktemp -d)
@@ -16,3 +16,6 @@ done
 target/release/raytrace render scenes/cornell_box.toml --quiet --out docs/images/cornell_box.png
 bash tools/fetch_meshes.sh >/dev/null
 target/release/raytrace render scenes/dragon.toml --quiet --out docs/images/dragon.png
+"target/release/examples/materials" --out "$out" >/dev/null
+cp "$out/materials.png" docs/images/materials.png
+echo docs/images/materials.png
