@@ -55,8 +55,8 @@ pub use build::{Built, Summary};
 pub use camera::FileCamera;
 pub use light::LightSpec;
 pub use model::{
-    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, ObjectSpec, RenderOptions, Scale,
-    Triple,
+    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, MeshDef, ObjectSpec, RenderOptions,
+    Scale, Triple,
 };
 pub use texture_spec::{TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
@@ -85,6 +85,9 @@ pub struct SceneFile {
     /// `[textures.NAME]`: the textures colour keys may refer to by name.
     #[serde(skip_serializing_if = "BTreeMap::is_empty")]
     pub textures: BTreeMap<String, TextureSpec>,
+    /// `[meshes.NAME]`: meshes read once, placed by `type = "instance"` objects.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub meshes: BTreeMap<String, MeshDef>,
     /// `[materials.NAME]`: the materials objects refer to by name.
     #[serde(skip_serializing_if = "BTreeMap::is_empty")]
     pub materials: BTreeMap<String, MaterialSpec>,
@@ -189,7 +192,8 @@ impl SceneFile {
 
     /// The other files the scene is made from, as [`SceneFile::build`] finds them
     /// (relative to the scene file's folder): the environment map's, each mesh's in the
-    /// order of `[[objects]]`, then the textures' [images](Self::image_files).
+    /// order of `[[objects]]`, the `[meshes]` entries' by name, then the textures'
+    /// [images](Self::image_files).
     pub fn input_files(&self) -> Vec<PathBuf> {
         let folder = self.path.parent().unwrap_or(Path::new(""));
         let map = match &self.background {
@@ -200,7 +204,12 @@ impl SceneFile {
             ObjectSpec::Mesh { file, .. } => Some(folder.join(file)),
             _ => None,
         });
-        map.into_iter().chain(meshes).chain(self.image_files()).collect()
+        let shared = self.meshes.values().map(|m| folder.join(&m.file));
+        map.into_iter()
+            .chain(meshes)
+            .chain(shared)
+            .chain(self.image_files())
+            .collect()
     }
 
     /// The image files the scene's textures read, as [`SceneFile::build`] finds them

@@ -16,7 +16,8 @@ use crate::image::Tonemap;
 use crate::material::{Material, MaterialKind};
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
-use crate::shape::{Hittable, Mesh, ShapeKind};
+use crate::shape::{Hittable, Instance, Mesh, Prototype, ShapeKind};
+use crate::transform::Affine;
 use crate::validate::{number, rule, show};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -100,6 +101,7 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
     resolver.check_textures::<F>()?;
     let materials = resolver.materials::<F>()?;
     let mut summary = Summary::default();
+    let prototypes = prototypes(&root, file, folder)?;
     for (i, object) in file.objects.iter().enumerate() {
         let at = root.key("objects").index(i);
         let Some(m) = materials.get(object.material()).cloned() else {
@@ -107,7 +109,14 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
                 .key("material")
                 .error(unknown_material(object.material(), &materials)));
         };
-        add_object(&mut scene, &mut summary, (&root, &at), object, m, folder)?;
+        add_object(
+            &mut scene,
+            &mut summary,
+            (&root, &at),
+            object,
+            m,
+            (folder, &prototypes),
+        )?;
     }
     for (i, light) in file.lights.iter().enumerate() {
         let at = root.key("lights").index(i);
@@ -201,7 +210,7 @@ fn add_object<F: Float>(
     (root, at): (&KeyPath, &KeyPath),
     spec: &ObjectSpec,
     material: MaterialKind<F>,
-    folder: &Path,
+    (folder, prototypes): (&Path, &BTreeMap<&str, Arc<Prototype>>),
 ) -> Result<()> {
     let solid = match *spec {
         ObjectSpec::Sphere { center, radius, .. } => Solid::Sphere { center, radius },
@@ -226,10 +235,57 @@ fn add_object<F: Float>(
             scene.add(shape, material);
             return Ok(());
         }
+        ObjectSpec::Instance {
+            ref mesh,
+            scale,
+            rotate,
+            translate,
+            ..
+        } => {
+            let Some(prototype) = prototypes.get(mesh.as_str()) else {
+                let known: Vec<String> = prototypes.keys().map(|k| k.to_string()).collect();
+                let why = super::resolve::unknown("mesh", mesh, known.iter(), "meshes");
+                return Err(at.key("mesh").error(why));
+            };
+            let to_world = affine(at, scale.factors(), rotate, translate)?;
+            let instance = Instance::new(Arc::clone(prototype), to_world).map_err(|e| blame(root, at, e))?;
+            scene.add(ShapeKind::from(instance), material);
+            return Ok(());
+        }
     };
     let shape = checked::<F, _>(root, at, make::shape::<f64>(solid), make::shape::<F>(solid))?;
     scene.add(shape, material);
     Ok(())
+}
+
+/// Every `[meshes]` entry read once, by name, for the instances to share.
+fn prototypes<'f>(
+    root: &KeyPath,
+    file: &'f SceneFile,
+    folder: &Path,
+) -> Result<BTreeMap<&'f str, Arc<Prototype>>> {
+    let mut made = BTreeMap::new();
+    for (name, def) in &file.meshes {
+        let at = root.key("meshes").key(name).key("file");
+        let mesh = crate::mesh::load(&folder.join(&def.file)).map_err(|e| at.wrap(e))?;
+        let vertices = mesh.positions.iter().map(|p| p.to_f64()).collect();
+        let prototype = Prototype::new(vertices, mesh.triangles).map_err(|e| at.wrap(e))?;
+        made.insert(name.as_str(), Arc::new(prototype));
+    }
+    Ok(made)
+}
+
+/// An instance's map from its mesh's space to the scene's: scale, rotate about x, then y,
+/// then z, translate, as a mesh object's [`Placement`] (every number finite, no factor
+/// zero), composed as one [`Affine`].
+fn affine(at: &KeyPath, scale: Triple, rotate: Triple, translate: Triple) -> Result<Affine> {
+    placement(at, scale, rotate, translate)?;
+    let [rx, ry, rz] = rotate;
+    Ok(Affine::scale(scale)
+        .then(&Affine::rotate([1.0, 0.0, 0.0], rx))
+        .then(&Affine::rotate([0.0, 1.0, 0.0], ry))
+        .then(&Affine::rotate([0.0, 0.0, 1.0], rz))
+        .then(&Affine::translate(translate)))
 }
 
 /// A mesh's placement: every number finite, no scale factor zero.

@@ -407,6 +407,31 @@ pub enum ObjectSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         flip_tex_coords: Option<bool>,
     },
+    /// A placement of a `[meshes.NAME]` mesh: the mesh read once, however often placed.
+    Instance {
+        /// The `[meshes]` entry placed.
+        mesh: String,
+        /// A factor for every axis, or one per axis.
+        #[serde(default)]
+        scale: Scale,
+        /// Degrees about x, then y, then z.
+        #[serde(deserialize_with = "super::triple::deserialize", default)]
+        rotate: Triple,
+        /// Added last.
+        #[serde(deserialize_with = "super::triple::deserialize", default)]
+        translate: Triple,
+        /// The material's name.
+        material: String,
+    },
+}
+
+/// A `[meshes.NAME]` entry: a mesh file read once, for `type = "instance"` objects to
+/// place many times.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MeshDef {
+    /// The mesh file (OBJ or PLY), relative to the scene file's folder.
+    pub file: String,
 }
 
 impl ObjectSpec {
@@ -416,7 +441,8 @@ impl ObjectSpec {
             Self::Sphere { material, .. }
             | Self::Plane { material, .. }
             | Self::Triangle { material, .. }
-            | Self::Mesh { material, .. } => material,
+            | Self::Mesh { material, .. }
+            | Self::Instance { material, .. } => material,
         }
     }
 }

@@ -274,7 +274,7 @@ fn check_and_advise_describe_the_scene() {
         0,
         &[
             "valid",
-            "36 triangles (meshes: 8)",
+            "36 triangles (meshes: 8, instances: 0)",
             "emitters: 1 objects give off light, 1 of them sampled",
         ],
     );

@@ -41,6 +41,7 @@ mod example_files;
 mod example_options;
 mod flat_shapes;
 mod glass;
+mod instance_files;
 mod instances;
 mod interrupt;
 mod intersections;

@@ -29,8 +29,8 @@ pub fn check(path: &Path) -> Result<()> {
     let r = file.render();
     println!("{}: valid", path.display());
     println!(
-        "  objects: {} spheres, {} planes, {} triangles (meshes: {}), {} lights",
-        s.spheres, s.planes, s.triangles, s.meshes, s.lights
+        "  objects: {} spheres, {} planes, {} triangles (meshes: {}, instances: {}), {} lights",
+        s.spheres, s.planes, s.triangles, s.meshes, s.instances, s.lights
     );
     if s.emitters > 0 {
         println!(
