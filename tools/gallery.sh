@@ -16,6 +16,7 @@ done
 target/release/raytrace render scenes/cornell_box.toml --quiet --out docs/images/cornell_box.png
 bash tools/fetch_meshes.sh >/dev/null
 target/release/raytrace render scenes/dragon.toml --quiet --out docs/images/dragon.png
+target/release/raytrace render scenes/environment.toml --quiet --out docs/images/environment.png
 "target/release/examples/materials" --out "$out" >/dev/null
 cp "$out/materials.png" docs/images/materials.png
 echo docs/images/materials.png
