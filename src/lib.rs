@@ -41,6 +41,7 @@ pub mod error;
 pub mod float;
 pub mod frame;
 pub mod image;
+pub mod import;
 mod lanes;
 pub mod light;
 pub mod material;

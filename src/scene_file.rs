@@ -58,7 +58,7 @@ pub use model::{
     BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, MeshDef, ObjectSpec, RenderOptions,
     Scale, Triple,
 };
-pub use texture_spec::{TextureRef, TextureSpec, UvScale, WrapSpec};
+pub use texture_spec::{ScalarRef, TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
 pub use warnings::Warning;
 
@@ -159,6 +159,16 @@ impl SceneFile {
             }
         })?;
         Self::parse(&text, path)
+    }
+
+    /// A file at `path` with nothing in it: every section at its default, no objects, to
+    /// be filled in by an importer ([`crate::import`]). Paths in it are relative to
+    /// `path`'s folder.
+    pub fn empty(path: &Path) -> SceneFile {
+        SceneFile {
+            path: path.to_path_buf(),
+            ..SceneFile::default()
+        }
     }
 
     /// Parses `text`; `path` names the file in messages and is the base of relative mesh

@@ -5,7 +5,7 @@ use super::camera::FileCamera;
 use super::check::{blame, checked, vec};
 use super::location::KeyPath;
 use super::make::{self, Solid};
-use super::model::{BackgroundSpec, CameraSpec, ObjectSpec, Triple};
+use super::model::{BackgroundSpec, CameraSpec, ObjectSpec, Scale, Triple};
 use super::resolve::Resolver;
 use super::transform::Placement;
 use crate::aabb::Aabb;
@@ -223,9 +223,17 @@ fn add_object<F: Float>(
             translate,
             face_normals,
             flip_tex_coords,
+            matrix,
             ..
         } => {
-            let placement = placement(at, scale.factors(), rotate, translate)?;
+            let placement = match matrix {
+                Some(rows) => {
+                    only_matrix(at, scale, rotate, translate)?;
+                    let map = Affine::from_rows(rows).map_err(|e| blame(root, &at.key("matrix"), e))?;
+                    Placement::map(map).map_err(|e| blame(root, &at.key("matrix"), e))?
+                }
+                None => placement(at, scale.factors(), rotate, translate)?,
+            };
             let path = folder.join(file);
             let attributes = Attributes {
                 normals: !face_normals,
@@ -240,6 +248,7 @@ fn add_object<F: Float>(
             scale,
             rotate,
             translate,
+            matrix,
             ..
         } => {
             let Some(prototype) = prototypes.get(mesh.as_str()) else {
@@ -247,7 +256,13 @@ fn add_object<F: Float>(
                 let why = super::resolve::unknown("mesh", mesh, known.iter(), "meshes");
                 return Err(at.key("mesh").error(why));
             };
-            let to_world = affine(at, scale.factors(), rotate, translate)?;
+            let to_world = match matrix {
+                Some(rows) => {
+                    only_matrix(at, scale, rotate, translate)?;
+                    Affine::from_rows(rows).map_err(|e| blame(root, &at.key("matrix"), e))?
+                }
+                None => affine(at, scale.factors(), rotate, translate)?,
+            };
             let instance = Instance::new(Arc::clone(prototype), to_world).map_err(|e| blame(root, at, e))?;
             scene.add(ShapeKind::from(instance), material);
             return Ok(());
@@ -286,6 +301,16 @@ fn affine(at: &KeyPath, scale: Triple, rotate: Triple, translate: Triple) -> Res
         .then(&Affine::rotate([0.0, 1.0, 0.0], ry))
         .then(&Affine::rotate([0.0, 0.0, 1.0], rz))
         .then(&Affine::translate(translate)))
+}
+
+/// A `matrix` is the whole placement: no `scale`, `rotate` or `translate` beside it.
+fn only_matrix(at: &KeyPath, scale: Scale, rotate: Triple, translate: Triple) -> Result<()> {
+    if scale.factors() != [1.0; 3] || rotate != [0.0; 3] || translate != [0.0; 3] {
+        return Err(at
+            .key("matrix")
+            .error("give either `matrix` or `scale`, `rotate` and `translate`, not both"));
+    }
+    Ok(())
 }
 
 /// A mesh's placement: every number finite, no scale factor zero.

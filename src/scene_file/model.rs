@@ -406,6 +406,10 @@ pub enum ObjectSpec {
         /// `flip_tex_coords`); unset, Mitsuba's default: `true` for OBJ, `false` for PLY.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         flip_tex_coords: Option<bool>,
+        /// Instead of `scale`, `rotate` and `translate`: the rows `[L | t]` of any
+        /// invertible affine map (a Mitsuba scene's `to_world`).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        matrix: Option<[[f64; 4]; 3]>,
     },
     /// A placement of a `[meshes.NAME]` mesh: the mesh read once, however often placed.
     Instance {
@@ -420,6 +424,10 @@ pub enum ObjectSpec {
         /// Added last.
         #[serde(deserialize_with = "super::triple::deserialize", default)]
         translate: Triple,
+        /// Instead of `scale`, `rotate` and `translate`: the rows `[L | t]` of any
+        /// invertible affine map.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        matrix: Option<[[f64; 4]; 3]>,
         /// The material's name.
         material: String,
     },

@@ -120,6 +120,21 @@ fn everything_round_trips_through_toml() {
         material: "glass with spaces".into(),
         face_normals: true,
         flip_tex_coords: Some(false),
+        matrix: None,
+    });
+    f.objects.push(ObjectSpec::Mesh {
+        file: "bunny.obj".into(),
+        scale: Scale::Uniform(1.0),
+        rotate: [0.0; 3],
+        translate: [0.0; 3],
+        material: "glass with spaces".into(),
+        face_normals: false,
+        flip_tex_coords: None,
+        matrix: Some([
+            [0.0, -1.0, 0.0, 1.5],
+            [1.0, 0.0, 0.0, 0.0],
+            [0.0, 0.0, 2.0, -0.25],
+        ]),
     });
     f.textures.insert(
         "wood".into(),

@@ -1,16 +1,21 @@
 //! Placing a mesh: its vertices scaled, then rotated, then translated.
 
+use crate::transform::Affine;
 use crate::vec3::Vec3;
 
 /// A mesh's placement in the scene: `p ↦ T + Rz·Ry·Rx·(S ∘ p)`, that is scale by `S` per
 /// axis, rotate about x, then y, then z (degrees, counter-clockwise looking down each axis
 /// towards the origin: the right-hand rule), then translate by `T`.
+///
+/// Or, from a Mitsuba scene's `to_world`, any invertible affine map ([`Placement::map`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Placement {
     scale: [f64; 3],
     // (sin, cos) of each rotation, computed once for all vertices.
     turns: [(f64, f64); 3],
     translate: [f64; 3],
+    /// A whole map instead, with the inverse transpose of its linear part for normals.
+    map: Option<(Affine, [[f64; 3]; 3])>,
 }
 
 impl Placement {
@@ -20,11 +25,36 @@ impl Placement {
             scale,
             turns: rotate_degrees.map(|d| d.to_radians().sin_cos()),
             translate,
+            map: None,
         }
+    }
+
+    /// The placement by the invertible map `map`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidValue`](crate::Error::InvalidValue) ([`Field::Transform`](crate::error::Field::Transform))
+    /// if the map cannot be inverted.
+    pub fn map(map: Affine) -> crate::Result<Self> {
+        let inverse = map.inverse().ok_or_else(|| {
+            crate::Error::invalid(
+                crate::error::Field::Transform,
+                "the map flattens space: it has no inverse",
+            )
+        })?;
+        let r = inverse.rows();
+        let normals = [0, 1, 2].map(|i| [r[0][i], r[1][i], r[2][i]]);
+        Ok(Self {
+            map: Some((map, normals)),
+            ..Self::new([1.0; 3], [0.0; 3], [0.0; 3])
+        })
     }
 
     /// Where the vertex `p` of the mesh file lands in the scene.
     pub fn apply(&self, p: Vec3<f64>) -> Vec3<f64> {
+        if let Some((map, _)) = &self.map {
+            let [x, y, z] = map.point([p.x, p.y, p.z]);
+            return Vec3::new(x, y, z);
+        }
         let [sx, sy, sz] = self.scale;
         let [tx, ty, tz] = self.translate;
         let r = self.rotate(Vec3::new(p.x * sx, p.y * sy, p.z * sz));
@@ -36,6 +66,10 @@ impl Placement {
     /// `S` diagonal), so that it stays perpendicular to the placed surface under a
     /// non-uniform scale. A zero normal stays zero.
     pub fn apply_normal(&self, n: Vec3<f64>) -> Vec3<f64> {
+        if let Some((_, m)) = &self.map {
+            let [x, y, z] = m.map(|r| r[0] * n.x + r[1] * n.y + r[2] * n.z);
+            return Vec3::new(x, y, z);
+        }
         let [sx, sy, sz] = self.scale;
         self.rotate(Vec3::new(n.x / sx, n.y / sy, n.z / sz))
     }

@@ -51,6 +51,7 @@ mod lights;
 mod mesh_attributes;
 mod meshes;
 mod mis_unbiased;
+mod mitsuba_import;
 mod outputs;
 mod random_scenes;
 mod reference;

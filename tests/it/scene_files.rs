@@ -246,6 +246,7 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
                 material,
                 face_normals: false,
                 flip_tex_coords: None,
+                matrix: None,
             }),
     ];
     let light = prop_oneof![

@@ -22,10 +22,14 @@ pub struct Cli {
 pub enum Command {
     /// Render a scene file into an image (or, with --tile, into a tile file).
     Render(RenderArgs),
-    /// Check a scene file: print its counts, bounds, acceleration and precision.
+    /// Check a scene file: print its counts, bounds, acceleration and precision (for a
+    /// Mitsuba XML scene, also what was read and where the render differs).
     Check {
-        /// The scene file.
+        /// The scene file (TOML, or Mitsuba 3 XML by its `.xml` extension).
         scene: PathBuf,
+        /// For a Mitsuba XML scene: NAME=VALUE for its `$NAME`, over its `<default>`s.
+        #[arg(short = 'D', value_name = "NAME=VALUE", value_parser = parse_define)]
+        define: Vec<(String, String)>,
     },
     /// Measure which precision the scene needs (f32 against f64 and a double-double reference).
     Advise {
@@ -40,8 +44,11 @@ pub enum Command {
 #[derive(Debug, Args)]
 #[command(group(ArgGroup::new("adaptive").args(["target_error", "time_budget"]).multiple(true)))]
 pub struct RenderArgs {
-    /// The scene file.
+    /// The scene file (TOML, or Mitsuba 3 XML by its `.xml` extension).
     pub scene: PathBuf,
+    /// For a Mitsuba XML scene: NAME=VALUE for its `$NAME`, over its `<default>`s.
+    #[arg(short = 'D', value_name = "NAME=VALUE", value_parser = parse_define)]
+    pub define: Vec<(String, String)>,
     /// Image width in pixels; the height follows the camera [default: the scene's]
     #[arg(long, value_name = "W", value_parser = clap::value_parser!(u64).range(1..))]
     pub width: Option<u64>,
@@ -205,6 +212,14 @@ impl TonemapArg {
             Self::None => ToneCurve::None,
             Self::Aces => ToneCurve::Aces,
         }
+    }
+}
+
+/// `NAME=VALUE`, the name not empty.
+fn parse_define(s: &str) -> Result<(String, String), String> {
+    match s.split_once('=') {
+        Some((name, value)) if !name.is_empty() => Ok((name.to_owned(), value.to_owned())),
+        _ => Err(format!("`{s}` is not NAME=VALUE")),
     }
 }
 

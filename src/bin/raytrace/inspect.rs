@@ -1,15 +1,29 @@
 //! `raytrace check` and `raytrace advise`: what a scene file holds and what it needs.
 
 use raytrace::advice::Advice;
+use raytrace::import::Imported;
 use raytrace::scene_file::{FilePrecision, SceneFile, advise_precision};
 use raytrace::{Camera, Result};
+use std::collections::BTreeMap;
 use std::path::Path;
+
+/// The scene file at `path`: TOML, or a Mitsuba 3 XML scene (by its `.xml` extension)
+/// imported with `defines` for its `$NAME`s, with what the import read and its warnings.
+pub fn load(path: &Path, defines: &[(String, String)]) -> Result<(SceneFile, Option<Imported>)> {
+    if !raytrace::import::is_mitsuba(path) {
+        return Ok((SceneFile::load(path)?, None));
+    }
+    let defines: BTreeMap<String, String> = defines.iter().cloned().collect();
+    let mut imported = raytrace::import::mitsuba(path, &defines)?;
+    let file = std::mem::replace(&mut imported.file, SceneFile::empty(path));
+    Ok((file, Some(imported)))
+}
 
 /// Validates the scene (every value, every mesh, in the scalar it renders in) and prints
 /// what it holds and what it probably does not mean. Everything is checked before
 /// "valid" is printed.
-pub fn check(path: &Path) -> Result<()> {
-    let file = SceneFile::load(path)?;
+pub fn check(path: &Path, defines: &[(String, String)]) -> Result<()> {
+    let (file, imported) = load(path, defines)?;
     let built = file.build::<f64>()?;
     let precision = match file.render().precision {
         FilePrecision::F32 => {
@@ -28,6 +42,15 @@ pub fn check(path: &Path) -> Result<()> {
     let s = &built.summary;
     let r = file.render();
     println!("{}: valid", path.display());
+    if let Some(imported) = &imported {
+        println!("  read from Mitsuba 3 XML: {} plugins", imported.read.len());
+        for plugin in &imported.read {
+            println!("    {plugin}");
+        }
+        for warning in &imported.warnings {
+            println!("  differs from Mitsuba: {warning}");
+        }
+    }
     println!(
         "  objects: {} spheres, {} planes, {} triangles (meshes: {}, instances: {}), {} lights",
         s.spheres, s.planes, s.triangles, s.meshes, s.instances, s.lights

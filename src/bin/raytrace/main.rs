@@ -37,7 +37,7 @@ fn main() -> ExitCode {
     }
     let result = match &cli.command {
         Command::Render(args) => render::run(args),
-        Command::Check { scene } => inspect::check(scene).map_err(Failure::from),
+        Command::Check { scene, define } => inspect::check(scene, define).map_err(Failure::from),
         Command::Advise { scene } => inspect::advise(scene).map_err(Failure::from),
         Command::Merge(args) => output::merge(args).map_err(Failure::from),
     };

@@ -18,7 +18,10 @@ use raytrace::{Camera, Error, Float, Rect, Render, Renderer, Result};
 /// A value the command line gave that the scene cannot take (an odd `--width` for the
 /// spec's camera) is a usage error naming the option; anything else a failure.
 pub fn run(args: &RenderArgs) -> Result<(), Failure> {
-    let mut file = SceneFile::load(&args.scene)?;
+    let (mut file, imported) = crate::inspect::load(&args.scene, &args.define)?;
+    for warning in imported.iter().flat_map(|i| &i.warnings) {
+        eprintln!("warning: differs from Mitsuba: {warning}");
+    }
     override_settings(&mut file, args)?;
     render(args, &file).map_err(|e| blame_option(e, args))
 }

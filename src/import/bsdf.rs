@@ -1,0 +1,229 @@
+//! Mitsuba 3's `<bsdf>` and `<texture>` plugins as the scene file's materials and
+//! textures: the same definitions under the same parameter names, so most map one to one.
+
+use super::convert::Importer;
+use super::xml::{Plugin, Value};
+use crate::error::Result;
+use crate::scene_file::{
+    ConductorSpec, DistributionSpec, FresnelSpec, IorSpec, MaterialSpec, PlasticSpec, RoughConductorSpec,
+    RoughDielectricSpec, RoughPlasticSpec, ScalarRef, TextureRef, TextureSpec, ThinDielectricSpec,
+    TwoSidedSpec, UvScale, WrapSpec,
+};
+
+impl Importer {
+    /// The material of the `<bsdf>` plugin `b`.
+    pub(super) fn material(&mut self, b: &Plugin) -> Result<MaterialSpec> {
+        self.read(b);
+        let ior = |name: &str, default: &str| -> Result<IorSpec> {
+            Ok(match b.properties.get(name).map(|p| &p.value) {
+                None => IorSpec::Named(default.into()),
+                Some(Value::Number(x)) => IorSpec::Value(*x),
+                Some(Value::Text(s)) => IorSpec::Named(s.clone()),
+                Some(_) => {
+                    return Err(b
+                        .at
+                        .error(format!("{}: `{name}` is a number or a medium's name", b.label())));
+                }
+            })
+        };
+        let distribution = match self.text(b, "distribution")?.as_deref() {
+            None | Some("beckmann") => DistributionSpec::Beckmann,
+            Some("ggx") => DistributionSpec::Ggx,
+            Some(other) => {
+                return Err(b.at.error(format!(
+                    "{}: no distribution `{other}` (beckmann, ggx)",
+                    b.label()
+                )));
+            }
+        };
+        Ok(match b.kind.as_str() {
+            "diffuse" => MaterialSpec::Lambertian {
+                albedo: self
+                    .texture(b, "reflectance")?
+                    .unwrap_or(TextureRef::Color([0.5; 3])),
+            },
+            "conductor" => MaterialSpec::Conductor(ConductorSpec {
+                material: self.text(b, "material")?,
+                eta: self.triple(b, "eta")?,
+                k: self.triple(b, "k")?,
+                specular_reflectance: self.texture(b, "specular_reflectance")?,
+            }),
+            "roughconductor" => MaterialSpec::RoughConductor(RoughConductorSpec {
+                material: self.text(b, "material")?,
+                eta: self.triple(b, "eta")?,
+                k: self.triple(b, "k")?,
+                specular_reflectance: self.texture(b, "specular_reflectance")?,
+                distribution,
+                alpha: self.scalar(b, "alpha")?,
+                alpha_u: self.scalar(b, "alpha_u")?,
+                alpha_v: self.scalar(b, "alpha_v")?,
+            }),
+            "dielectric" => {
+                let index = |spec: IorSpec| -> Result<f64> {
+                    match spec {
+                        IorSpec::Value(x) => Ok(x),
+                        IorSpec::Named(name) => crate::material::ior::dielectric(&name)
+                            .ok_or_else(|| b.at.error(format!("{}: no medium named `{name}`", b.label()))),
+                    }
+                };
+                let (int, ext) = (index(ior("int_ior", "bk7")?)?, index(ior("ext_ior", "air")?)?);
+                let (r, t) = (
+                    self.triple(b, "specular_reflectance")?,
+                    self.triple(b, "specular_transmittance")?,
+                );
+                if r.is_some() && t.is_some() && r != t {
+                    return Err(b.at.error(format!(
+                        "{}: a dielectric here has one tint for reflection and transmission",
+                        b.label()
+                    )));
+                }
+                if r.is_some() != t.is_some() && r.or(t) != Some([1.0; 3]) {
+                    self.warn(
+                        b,
+                        "its one tint is applied to reflection and transmission alike".into(),
+                    );
+                }
+                MaterialSpec::Dielectric {
+                    index: int / ext,
+                    albedo: r.or(t),
+                    fresnel: FresnelSpec::Exact,
+                }
+            }
+            "roughdielectric" => MaterialSpec::RoughDielectric(RoughDielectricSpec {
+                int_ior: ior("int_ior", "bk7")?,
+                ext_ior: ior("ext_ior", "air")?,
+                specular_reflectance: self.texture(b, "specular_reflectance")?,
+                specular_transmittance: self.texture(b, "specular_transmittance")?,
+                distribution,
+                alpha: self.scalar(b, "alpha")?,
+                alpha_u: self.scalar(b, "alpha_u")?,
+                alpha_v: self.scalar(b, "alpha_v")?,
+            }),
+            "thindielectric" => MaterialSpec::ThinDielectric(ThinDielectricSpec {
+                int_ior: ior("int_ior", "bk7")?,
+                ext_ior: ior("ext_ior", "air")?,
+                specular_reflectance: self.texture(b, "specular_reflectance")?,
+                specular_transmittance: self.texture(b, "specular_transmittance")?,
+            }),
+            "plastic" => MaterialSpec::Plastic(PlasticSpec {
+                diffuse_reflectance: self
+                    .texture(b, "diffuse_reflectance")?
+                    .unwrap_or(TextureRef::Color([0.5; 3])),
+                specular_reflectance: self.texture(b, "specular_reflectance")?,
+                int_ior: ior("int_ior", "polypropylene")?,
+                ext_ior: ior("ext_ior", "air")?,
+                nonlinear: self.boolean(b, "nonlinear")?.unwrap_or(false),
+            }),
+            "roughplastic" => MaterialSpec::RoughPlastic(RoughPlasticSpec {
+                diffuse_reflectance: self
+                    .texture(b, "diffuse_reflectance")?
+                    .unwrap_or(TextureRef::Color([0.5; 3])),
+                specular_reflectance: self.texture(b, "specular_reflectance")?,
+                int_ior: ior("int_ior", "polypropylene")?,
+                ext_ior: ior("ext_ior", "air")?,
+                nonlinear: self.boolean(b, "nonlinear")?.unwrap_or(false),
+                distribution,
+                alpha: self.number(b, "alpha")?.unwrap_or(0.1),
+            }),
+            "twosided" => {
+                let inner: Vec<&Plugin> = b.children.iter().filter(|c| c.tag == "bsdf").collect();
+                let (front, back) = match inner[..] {
+                    [front] => (front, None),
+                    [front, back] => (front, Some(back)),
+                    _ => return Err(b.at.error(format!("{}: holds one or two <bsdf>s", b.label()))),
+                };
+                MaterialSpec::TwoSided(TwoSidedSpec {
+                    front: Box::new(self.material(front)?),
+                    back: back.map(|p| self.material(p).map(Box::new)).transpose()?,
+                })
+            }
+            "normalmap" => {
+                let Some(inner) = b.children.iter().find(|c| c.tag == "bsdf") else {
+                    return Err(b.at.error(format!("{}: holds the <bsdf> it perturbs", b.label())));
+                };
+                let normal_map = self.texture(b, "normalmap")?.ok_or_else(|| {
+                    b.at.error(format!("{}: needs its `normalmap` texture", b.label()))
+                })?;
+                let material = self.named_material(inner)?;
+                MaterialSpec::NormalMap { normal_map, material }
+            }
+            other => return Err(self.unsupported(b, other)),
+        })
+    }
+
+    /// The colour parameter `name` of `p`: a colour, a number (grey) or a nested texture.
+    pub(super) fn texture(&mut self, p: &Plugin, name: &str) -> Result<Option<TextureRef>> {
+        if let Some(t) = p
+            .children
+            .iter()
+            .find(|c| c.tag == "texture" && c.name.as_deref() == Some(name))
+        {
+            return self
+                .texture_plugin(t)
+                .map(|spec| Some(TextureRef::Inline(Box::new(spec))));
+        }
+        Ok(self.triple(p, name)?.map(TextureRef::Color))
+    }
+
+    /// The number parameter `name` of `p` that may be a texture (a roughness).
+    fn scalar(&mut self, p: &Plugin, name: &str) -> Result<Option<ScalarRef>> {
+        Ok(self.texture(p, name)?.map(ScalarRef))
+    }
+
+    /// A `<texture>` plugin: `bitmap` or `checkerboard`.
+    fn texture_plugin(&mut self, t: &Plugin) -> Result<TextureSpec> {
+        self.read(t);
+        let (scale, offset) = self.to_uv(t)?;
+        Ok(match t.kind.as_str() {
+            "checkerboard" => TextureSpec::Checkerboard {
+                color0: self.triple(t, "color0")?.unwrap_or([0.4; 3]),
+                color1: self.triple(t, "color1")?.unwrap_or([0.2; 3]),
+                scale,
+                offset,
+            },
+            "bitmap" => {
+                let wrap = match self.text(t, "wrap_mode")?.as_deref() {
+                    None | Some("repeat") => WrapSpec::Repeat,
+                    Some("clamp") => WrapSpec::Clamp,
+                    Some(other) => {
+                        return Err(t.at.error(format!(
+                            "{}: wrap_mode `{other}` is not read (repeat, clamp)",
+                            t.label()
+                        )));
+                    }
+                };
+                if let Some(filter) = self.text(t, "filter_type")?.filter(|f| f != "bilinear") {
+                    self.warn(t, format!("filter_type `{filter}` is rendered bilinear"));
+                }
+                let file = self
+                    .text(t, "filename")?
+                    .ok_or_else(|| t.at.error(format!("{}: needs a `filename`", t.label())))?;
+                TextureSpec::Image {
+                    file: self.path_of(&file),
+                    wrap,
+                    raw: self.boolean(t, "raw")?,
+                    scale,
+                    offset,
+                }
+            }
+            other => return Err(self.unsupported(t, other)),
+        })
+    }
+
+    /// A texture's `to_uv`: a scale and an offset of `uv`, nothing else.
+    fn to_uv(&self, t: &Plugin) -> Result<(UvScale, [f64; 2])> {
+        let Some(p) = t.properties.get("to_uv") else {
+            return Ok((UvScale::Uniform(1.0), [0.0; 2]));
+        };
+        let Value::Transform(map) = &p.value else {
+            return Err(p.at.error("`to_uv` is a <transform>"));
+        };
+        let r = map.rows();
+        if r[0][1] != 0.0 || r[1][0] != 0.0 {
+            return Err(p
+                .at
+                .error("`to_uv` may scale and translate uv here, not turn or shear it"));
+        }
+        Ok((UvScale::PerAxis([r[0][0], r[1][1]]), [r[0][3], r[1][3]]))
+    }
+}

@@ -1,0 +1,470 @@
+//! A Mitsuba 3 scene's plugins as a [`SceneFile`]: sensors, film, sampler and integrator
+//! as `[render]` and `[camera]`, shapes as objects, emitters as lights and backgrounds.
+//! What has no counterpart is an error naming the plugin, its file and line; what is read
+//! with a difference (another reconstruction filter) is a warning naming it.
+
+use super::xml::{Plugin, Value};
+use crate::error::{Error, Result};
+use crate::scene_file::{
+    BackgroundSpec, CameraSpec, LightSpec, MaterialSpec, ObjectSpec, SceneFile, TextureRef,
+};
+use crate::transform::Affine;
+use std::path::PathBuf;
+
+/// What an import gives: the scene, what it read and how it differs.
+#[derive(Debug)]
+pub struct Imported {
+    /// The scene, ready for [`SceneFile::build`].
+    pub file: SceneFile,
+    /// Every plugin read, as `<shape type="obj"> (scene.xml, line 12)`.
+    pub read: Vec<String>,
+    /// Where the render differs from Mitsuba's, each naming the plugin, file and line.
+    pub warnings: Vec<String>,
+}
+
+/// Builds the scene file from the plugins.
+pub(super) struct Importer {
+    pub(super) file: SceneFile,
+    folders: Vec<PathBuf>,
+    read: Vec<String>,
+    warnings: Vec<String>,
+    /// Set by an area emitter, the sampled environment: Mitsuba's `max_depth` then counts
+    /// as the renderer's does.
+    lights_on_surfaces: bool,
+}
+
+impl Importer {
+    pub(super) fn new(file: SceneFile, folders: Vec<PathBuf>) -> Self {
+        Self {
+            file,
+            folders,
+            read: Vec::new(),
+            warnings: Vec::new(),
+            lights_on_surfaces: false,
+        }
+    }
+
+    /// Every top-level plugin converted, and the render options set.
+    pub(super) fn run(mut self, plugins: &[Plugin]) -> Result<Imported> {
+        // Mitsuba's scene without an emitter at infinity is black beyond the objects.
+        self.file.background = BackgroundSpec::Solid {
+            color: [0.0; 3],
+            light: false,
+        };
+        let mut max_depth = None;
+        for p in plugins {
+            match p.tag.as_str() {
+                "sensor" => self.sensor(p)?,
+                "shape" => self.shape(p)?,
+                "emitter" => self.emitter(p)?,
+                "bsdf" => {
+                    self.named_material(p)?;
+                }
+                "texture" => {
+                    self.read(p);
+                }
+                "integrator" if p.kind == "path" => {
+                    self.read(p);
+                    max_depth = self.number(p, "max_depth")?;
+                }
+                _ => return Err(self.unsupported(p, &p.kind)),
+            }
+        }
+        // Mitsuba counts path segments; a path here takes `max_depth` bounces, one segment
+        // more, unless a light sits on a surface or is the sampled environment.
+        let depth = max_depth.unwrap_or(-1.0);
+        self.file.render.max_depth = if depth < 0.0 {
+            self.warnings
+                .push("the path integrator's max_depth is unbounded (-1): rendered with 64".into());
+            64
+        } else if self.lights_on_surfaces {
+            depth as u32
+        } else {
+            (depth as u32).saturating_sub(1)
+        };
+        Ok(Imported {
+            file: self.file,
+            read: self.read,
+            warnings: self.warnings,
+        })
+    }
+
+    pub(super) fn read(&mut self, p: &Plugin) {
+        self.read.push(format!(
+            "{} ({}, line {})",
+            p.label(),
+            p.at.file.display(),
+            p.at.line
+        ));
+    }
+
+    pub(super) fn warn(&mut self, p: &Plugin, what: String) {
+        let where_ = format!("{}, line {}", p.at.file.display(), p.at.line);
+        self.warnings.push(format!("{} ({where_}): {what}", p.label()));
+    }
+
+    pub(super) fn unsupported(&self, p: &Plugin, kind: &str) -> Error {
+        p.at.error(format!(
+            "<{} type=\"{kind}\"> is not supported by this importer",
+            p.tag
+        ))
+    }
+
+    /// A file name as the scene file keeps it: found in the XML's folder or a `<path>`.
+    pub(super) fn path_of(&self, name: &str) -> String {
+        let found = self.folders.iter().map(|f| f.join(name)).find(|p| p.exists());
+        found
+            .unwrap_or_else(|| self.folders[0].join(name))
+            .to_string_lossy()
+            .into_owned()
+    }
+
+    fn property<'p>(&self, p: &'p Plugin, name: &str) -> Option<&'p super::xml::Property> {
+        p.properties.get(name)
+    }
+
+    pub(super) fn number(&self, p: &Plugin, name: &str) -> Result<Option<f64>> {
+        match self.property(p, name).map(|q| (&q.value, &q.at)) {
+            None => Ok(None),
+            Some((Value::Number(x), _)) => Ok(Some(*x)),
+            Some((_, at)) => Err(at.error(format!("{}: `{name}` is a number", p.label()))),
+        }
+    }
+
+    pub(super) fn boolean(&self, p: &Plugin, name: &str) -> Result<Option<bool>> {
+        match self.property(p, name).map(|q| (&q.value, &q.at)) {
+            None => Ok(None),
+            Some((Value::Bool(b), _)) => Ok(Some(*b)),
+            Some((_, at)) => Err(at.error(format!("{}: `{name}` is a boolean", p.label()))),
+        }
+    }
+
+    pub(super) fn text(&self, p: &Plugin, name: &str) -> Result<Option<String>> {
+        match self.property(p, name).map(|q| (&q.value, &q.at)) {
+            None => Ok(None),
+            Some((Value::Text(s), _)) => Ok(Some(s.clone())),
+            Some((_, at)) => Err(at.error(format!("{}: `{name}` is a string", p.label()))),
+        }
+    }
+
+    /// A colour, point or vector; a number is grey.
+    pub(super) fn triple(&self, p: &Plugin, name: &str) -> Result<Option<[f64; 3]>> {
+        match self.property(p, name).map(|q| (&q.value, &q.at)) {
+            None => Ok(None),
+            Some((Value::Triple(t), _)) => Ok(Some(*t)),
+            Some((Value::Number(x), _)) => Ok(Some([*x; 3])),
+            Some((_, at)) => Err(at.error(format!("{}: `{name}` is a colour or a point", p.label()))),
+        }
+    }
+
+    fn to_world(&self, p: &Plugin) -> Result<Affine> {
+        match self.property(p, "to_world").map(|q| (&q.value, &q.at)) {
+            None => Ok(Affine::IDENTITY),
+            Some((Value::Transform(m), _)) => Ok(*m),
+            Some((_, at)) => Err(at.error(format!("{}: `to_world` is a <transform>", p.label()))),
+        }
+    }
+
+    /// The material of `b`, under its `id` or a name made up for it; its name.
+    pub(super) fn named_material(&mut self, b: &Plugin) -> Result<String> {
+        let name =
+            b.id.clone()
+                .unwrap_or_else(|| format!("{}_line{}", b.kind, b.at.line));
+        if !self.file.materials.contains_key(&name) {
+            let spec = self.material(b)?;
+            self.file.materials.insert(name.clone(), spec);
+        }
+        Ok(name)
+    }
+
+    fn sensor(&mut self, s: &Plugin) -> Result<()> {
+        self.read(s);
+        if s.kind != "perspective" && s.kind != "thinlens" {
+            return Err(self.unsupported(s, &s.kind));
+        }
+        let (mut width, mut height) = (768.0, 576.0);
+        for c in &s.children {
+            self.read(c);
+            match (c.tag.as_str(), c.kind.as_str()) {
+                ("film", "hdrfilm") => {
+                    width = self.number(c, "width")?.unwrap_or(width);
+                    height = self.number(c, "height")?.unwrap_or(height);
+                    for f in c
+                        .children
+                        .iter()
+                        .filter(|f| f.tag == "rfilter" && f.kind != "box")
+                    {
+                        self.warn(
+                            f,
+                            "rendered with a box filter (each sample counts for its own pixel)".into(),
+                        );
+                    }
+                }
+                ("sampler", kind) => {
+                    if kind != "independent" {
+                        self.warn(c, "rendered with independent uniform samples".into());
+                    }
+                    self.file.render.spp = self.number(c, "sample_count")?.unwrap_or(4.0) as u32;
+                }
+                _ => return Err(self.unsupported(c, &c.kind)),
+            }
+        }
+        let m = self.to_world(s)?;
+        let r = m.rows();
+        let det = r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1])
+            - r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0])
+            + r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
+        if det <= 0.0 {
+            return Err(s.at.error(format!(
+                "{}: a mirrored camera (to_world with a negative determinant) is not supported",
+                s.label()
+            )));
+        }
+        let aspect = width / height;
+        let fov = self.number(s, "fov")?.unwrap_or(30.0);
+        let t = (fov.to_radians() / 2.0).tan();
+        let vertical = match self.text(s, "fov_axis")?.as_deref().unwrap_or("x") {
+            "x" => t / aspect,
+            "y" => t,
+            "diagonal" => t / (1.0 + aspect * aspect).sqrt(),
+            "smaller" if aspect >= 1.0 => t,
+            "smaller" => t / aspect,
+            "larger" if aspect >= 1.0 => t / aspect,
+            "larger" => t,
+            other => return Err(s.at.error(format!("{}: no fov_axis `{other}`", s.label()))),
+        };
+        let (aperture, focus_distance) = if s.kind == "thinlens" {
+            (
+                self.number(s, "aperture_radius")?.unwrap_or(0.03),
+                self.number(s, "focus_distance")?,
+            )
+        } else {
+            (0.0, None)
+        };
+        self.file.render.width = width as usize;
+        self.file.camera = CameraSpec::LookAt {
+            from: m.point([0.0; 3]),
+            at: m.point([0.0, 0.0, 1.0]),
+            up: m.vector([0.0, 1.0, 0.0]),
+            vfov: 2.0 * vertical.atan().to_degrees(),
+            aspect,
+            aperture,
+            focus_distance,
+        };
+        Ok(())
+    }
+
+    fn emitter(&mut self, e: &Plugin) -> Result<()> {
+        self.read(e);
+        let m = self.to_world(e)?;
+        let colour =
+            |me: &Self, name: &str| -> Result<[f64; 3]> { Ok(me.triple(e, name)?.unwrap_or([1.0; 3])) };
+        match e.kind.as_str() {
+            "point" => {
+                let position = self.triple(e, "position")?.unwrap_or(m.point([0.0; 3]));
+                self.file.lights.push(LightSpec::Point {
+                    position,
+                    intensity: colour(self, "intensity")?,
+                });
+            }
+            "spot" => self.file.lights.push(LightSpec::Spot {
+                position: m.point([0.0; 3]),
+                direction: m.vector([0.0, 0.0, 1.0]),
+                intensity: colour(self, "intensity")?,
+                cutoff_angle: self.number(e, "cutoff_angle")?.unwrap_or(20.0),
+                beam_width: self.number(e, "beam_width")?,
+            }),
+            "directional" => {
+                let direction = self.triple(e, "direction")?.unwrap_or(m.vector([0.0, 0.0, 1.0]));
+                self.file.lights.push(LightSpec::Directional {
+                    direction,
+                    irradiance: colour(self, "irradiance")?,
+                });
+            }
+            "constant" => {
+                self.lights_on_surfaces = true;
+                self.file.background = BackgroundSpec::Solid {
+                    color: colour(self, "radiance")?,
+                    light: true,
+                };
+            }
+            "envmap" => {
+                self.lights_on_surfaces = true;
+                let file = self
+                    .text(e, "filename")?
+                    .ok_or_else(|| e.at.error("<emitter type=\"envmap\"> needs a `filename`"))?;
+                let rotate =
+                    euler_xyz(&m).ok_or_else(|| e.at.error("envmap: `to_world` may only turn the map"))?;
+                self.file.background = BackgroundSpec::Envmap {
+                    file: self.path_of(&file),
+                    scale: self.number(e, "scale")?.unwrap_or(1.0),
+                    rotate,
+                };
+            }
+            other => return Err(self.unsupported(e, other)),
+        }
+        Ok(())
+    }
+
+    fn shape(&mut self, s: &Plugin) -> Result<()> {
+        self.read(s);
+        let bsdf = s.children.iter().find(|c| c.tag == "bsdf");
+        let area = s.children.iter().find(|c| c.tag == "emitter");
+        let material = match (area, bsdf) {
+            (Some(e), _) if e.kind != "area" => return Err(self.unsupported(e, &e.kind)),
+            (Some(e), b) => {
+                self.read(e);
+                self.lights_on_surfaces = true;
+                let albedo = match b {
+                    Some(b) if b.kind == "diffuse" => match self.texture(b, "reflectance")? {
+                        Some(TextureRef::Color(c)) => Some(c),
+                        None => Some([0.5; 3]),
+                        Some(_) => {
+                            return Err(b
+                                .at
+                                .error("an emitter's diffuse reflectance is a colour here, not a texture"));
+                        }
+                    },
+                    Some(b) => {
+                        self.warn(
+                            b,
+                            "under an area emitter it reflects nothing here (only a diffuse one does)".into(),
+                        );
+                        None
+                    }
+                    None => Some([0.5; 3]),
+                };
+                let name = format!("area_line{}", e.at.line);
+                let radiance = self.triple(e, "radiance")?.unwrap_or([1.0; 3]);
+                self.file.materials.insert(
+                    name.clone(),
+                    MaterialSpec::Emissive {
+                        radiance,
+                        two_sided: false,
+                        albedo,
+                    },
+                );
+                name
+            }
+            (None, Some(b)) => self.named_material(b)?,
+            (None, None) => {
+                let name = "default_diffuse".to_string();
+                self.file
+                    .materials
+                    .entry(name.clone())
+                    .or_insert(MaterialSpec::Lambertian {
+                        albedo: TextureRef::Color([0.5; 3]),
+                    });
+                name
+            }
+        };
+        let m = self.to_world(s)?;
+        match s.kind.as_str() {
+            "obj" | "ply" => {
+                let file = self
+                    .text(s, "filename")?
+                    .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
+                self.file.objects.push(ObjectSpec::Mesh {
+                    file: self.path_of(&file),
+                    scale: Default::default(),
+                    rotate: [0.0; 3],
+                    translate: [0.0; 3],
+                    material,
+                    face_normals: self.boolean(s, "face_normals")?.unwrap_or(false),
+                    flip_tex_coords: self.boolean(s, "flip_tex_coords")?,
+                    matrix: (m != Affine::IDENTITY).then(|| m.rows()),
+                });
+            }
+            "sphere" => {
+                let c = self.triple(s, "center")?.unwrap_or([0.0; 3]);
+                let radius = self.number(s, "radius")?.unwrap_or(1.0);
+                let scale = uniform_scale(&m).ok_or_else(|| {
+                    s.at.error("sphere: `to_world` may only scale uniformly, turn and move it")
+                })?;
+                self.file.objects.push(ObjectSpec::Sphere {
+                    center: m.point(c),
+                    radius: radius * scale,
+                    material,
+                });
+            }
+            "rectangle" | "cube" => {
+                let corners: &[[[f64; 3]; 3]] = if s.kind == "rectangle" { &RECTANGLE } else { &CUBE };
+                for [a, b, c] in corners {
+                    let (a, b, c) = (m.point(*a), m.point(*b), m.point(*c));
+                    self.file.objects.push(ObjectSpec::Triangle {
+                        a,
+                        b,
+                        c,
+                        material: material.clone(),
+                    });
+                }
+            }
+            other => return Err(self.unsupported(s, other)),
+        }
+        Ok(())
+    }
+}
+
+/// Mitsuba's `rectangle`: `[−1, 1]²` at `z = 0`, facing `+z`.
+const RECTANGLE: [[[f64; 3]; 3]; 2] = [
+    [[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0]],
+    [[-1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0]],
+];
+
+/// Mitsuba's `cube`: `[−1, 1]³`, every face wound outward.
+const CUBE: [[[f64; 3]; 3]; 12] = {
+    const fn face(axis: usize, sign: f64) -> [[[f64; 3]; 3]; 2] {
+        // The two other axes, in the order that makes (u × v) point along +axis.
+        let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+        let mut q = [[0.0; 3]; 4];
+        let corners = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
+        let mut k = 0;
+        while k < 4 {
+            q[k][axis] = sign;
+            q[k][u] = corners[k].0 * sign;
+            q[k][v] = corners[k].1;
+            k += 1;
+        }
+        [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]
+    }
+    let mut all = [[[0.0; 3]; 3]; 12];
+    let mut f = 0;
+    while f < 6 {
+        let two = face(f / 2, if f % 2 == 0 { 1.0 } else { -1.0 });
+        all[2 * f] = two[0];
+        all[2 * f + 1] = two[1];
+        f += 1;
+    }
+    all
+};
+
+/// The factor of a map that scales uniformly (then turns and moves), if it does.
+fn uniform_scale(m: &Affine) -> Option<f64> {
+    let r = m.rows();
+    let col = |j: usize| (r[0][j] * r[0][j] + r[1][j] * r[1][j] + r[2][j] * r[2][j]).sqrt();
+    let s = col(0);
+    let dot = |i: usize, j: usize| r[0][i] * r[0][j] + r[1][i] * r[1][j] + r[2][i] * r[2][j];
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * s.max(1.0);
+    (close(col(1), s)
+        && close(col(2), s)
+        && close(dot(0, 1), 0.0)
+        && close(dot(1, 2), 0.0)
+        && close(dot(0, 2), 0.0))
+    .then_some(s)
+}
+
+/// The turns about x, then y, then z, in degrees, of a map that only turns (`R = Rz·Ry·Rx`).
+fn euler_xyz(m: &Affine) -> Option<[f64; 3]> {
+    if uniform_scale(m).is_none_or(|s| (s - 1.0).abs() > 1e-9) {
+        return None;
+    }
+    let r = m.rows();
+    let y = (-r[2][0]).clamp(-1.0, 1.0).asin();
+    let (x, z) = if r[2][0].abs() < 1.0 - 1e-12 {
+        (r[2][1].atan2(r[2][2]), r[1][0].atan2(r[0][0]))
+    } else {
+        // Gimbal lock: the x and z turns are about one axis; put it all in x.
+        ((-r[1][2]).atan2(r[1][1]), 0.0)
+    };
+    Some([x, y, z].map(f64::to_degrees))
+}

@@ -1,0 +1,98 @@
+//! Mitsuba 3's `<transform>`: its steps (`translate`, `rotate`, `scale`, `matrix`,
+//! `lookat`), each applied after the ones before it, as one [`Affine`].
+
+use super::xml::At;
+use crate::error::Result;
+use crate::transform::Affine;
+
+/// The map of the `<transform>` element `node`: `Mₙ·…·M₁` for its steps `M₁ … Mₙ` in
+/// document order. Attribute values pass through `substitute` (`$name`).
+pub fn transform(
+    node: roxmltree::Node,
+    at: &At,
+    substitute: &dyn Fn(&str) -> Result<String>,
+) -> Result<Affine> {
+    let mut map = Affine::IDENTITY;
+    for step in node.children().filter(roxmltree::Node::is_element) {
+        let tag = step.tag_name().name();
+        let attribute = |name: &str| step.attribute(name).map(substitute).transpose();
+        let numbers = |name: &str| -> Result<Option<Vec<f64>>> {
+            let Some(text) = attribute(name)? else {
+                return Ok(None);
+            };
+            text.split(|c: char| c == ',' || c.is_whitespace())
+                .filter(|s| !s.is_empty())
+                .map(|s| {
+                    s.parse::<f64>()
+                        .map_err(|_| at.error(format!("<{tag} {name}=…>: `{s}` is not a number")))
+                })
+                .collect::<Result<Vec<_>>>()
+                .map(Some)
+        };
+        let triple = |name: &str| -> Result<[f64; 3]> {
+            match numbers(name)?.as_deref() {
+                Some(&[x, y, z]) => Ok([x, y, z]),
+                Some(_) => Err(at.error(format!("<{tag} {name}=…> needs three numbers"))),
+                None => Err(at.error(format!("<{tag}> needs `{name}`"))),
+            }
+        };
+        // `x`, `y`, `z` attributes, each `default` when absent; or `value`.
+        let xyz = |default: f64| -> Result<[f64; 3]> {
+            if let Some(v) = numbers("value")? {
+                return match v[..] {
+                    [s] => Ok([s; 3]),
+                    [x, y, z] => Ok([x, y, z]),
+                    _ => Err(at.error(format!("<{tag} value=…> needs one or three numbers"))),
+                };
+            }
+            let one = |a: &str| -> Result<f64> {
+                Ok(numbers(a)?.and_then(|v| v.first().copied()).unwrap_or(default))
+            };
+            Ok([one("x")?, one("y")?, one("z")?])
+        };
+        let next = match tag {
+            "translate" => Affine::translate(xyz(0.0)?),
+            "scale" => Affine::scale(xyz(1.0)?),
+            "rotate" => {
+                let angle = numbers("angle")?
+                    .and_then(|v| v.first().copied())
+                    .ok_or_else(|| at.error("<rotate> needs an `angle` in degrees"))?;
+                let axis = xyz(0.0)?;
+                if axis == [0.0; 3] || !axis.iter().all(|a| a.is_finite()) {
+                    return Err(at.error("<rotate> needs a finite, non-zero axis"));
+                }
+                Affine::rotate(axis, angle)
+            }
+            "matrix" => {
+                let v = numbers("value")?.unwrap_or_default();
+                if v.len() != 16 && v.len() != 9 {
+                    return Err(at.error("<matrix value=…> needs 16 numbers (4×4, row by row) or 9 (3×3)"));
+                }
+                let rows = if v.len() == 16 {
+                    if v[12..16] != [0.0, 0.0, 0.0, 1.0] {
+                        return Err(
+                            at.error("<matrix>: a projective matrix (last row not 0 0 0 1) places nothing")
+                        );
+                    }
+                    [0, 1, 2].map(|i| [v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]])
+                } else {
+                    [0, 1, 2].map(|i| [v[3 * i], v[3 * i + 1], v[3 * i + 2], 0.0])
+                };
+                Affine::from_rows(rows).map_err(|e| at.error(format!("<matrix>: {e}")))?
+            }
+            "lookat" => {
+                let up = if step.attribute("up").is_some() {
+                    triple("up")?
+                } else {
+                    [0.0, 1.0, 0.0]
+                };
+                Affine::look_at(triple("origin")?, triple("target")?, up).ok_or_else(|| {
+                    at.error("<lookat>: the origin is the target, or `up` is along the view")
+                })?
+            }
+            other => return Err(at.error(format!("<{other}> is not a step of a <transform>"))),
+        };
+        map = map.then(&next);
+    }
+    Ok(map)
+}
