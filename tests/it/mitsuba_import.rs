@@ -261,3 +261,30 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
         a[0] * b[1] - a[1] * b[0],
     ]
 }
+
+proptest::proptest! {
+    #![proptest_config(crate::common::config(128, 0x3175_0BA0, "proptest-regressions/mitsuba_import.txt"))]
+
+    /// Arbitrary text, and edits of a real scene (a cut and an insertion of XML-ish
+    /// characters), are imported or refused with an error, never a panic; what imports
+    /// builds or is refused too.
+    #[test]
+    fn any_edit_of_a_real_scene_is_refused_or_read_without_panicking(
+        at in 0..SCENE.len(), cut in 0..24usize, insert in "[<>/=\"a-z0-9.,$ \\n-]{0,16}",
+        junk in "\\PC{0,120}",
+    ) {
+        let mut text = SCENE.as_bytes()[..at].to_vec();
+        text.extend_from_slice(insert.as_bytes());
+        text.extend_from_slice(&SCENE.as_bytes()[(at + cut).min(SCENE.len())..]);
+        let dir = folder("edit", &String::from_utf8_lossy(&text));
+        for scene in [None, Some(junk.as_str())] {
+            if let Some(junk) = scene {
+                std::fs::write(dir.join("scene.xml"), junk).unwrap();
+            }
+            if let Ok(imported) = import::mitsuba(&dir.join("scene.xml"), &BTreeMap::new()) {
+                let _ = imported.file.build::<f32>().map(|b| b.summary);
+            }
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
