@@ -5,10 +5,12 @@
 
 use super::xml::{Plugin, Value};
 use crate::error::{Error, Result};
+use crate::scene_file::MeshDef;
 use crate::scene_file::{
     BackgroundSpec, CameraSpec, LightSpec, MaterialSpec, ObjectSpec, SceneFile, TextureRef,
 };
 use crate::transform::Affine;
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 
 /// What an import gives: the scene, what it read and how it differs.
@@ -31,6 +33,8 @@ pub(super) struct Importer {
     /// Set by an area emitter, the sampled environment: Mitsuba's `max_depth` then counts
     /// as the renderer's does.
     lights_on_surfaces: bool,
+    /// Each `shapegroup` by id: its meshes' `[meshes]` names, their own maps, materials.
+    groups: BTreeMap<String, Vec<(String, Affine, String)>>,
 }
 
 impl Importer {
@@ -41,6 +45,7 @@ impl Importer {
             read: Vec::new(),
             warnings: Vec::new(),
             lights_on_surfaces: false,
+            groups: BTreeMap::new(),
         }
     }
 
@@ -307,6 +312,11 @@ impl Importer {
     }
 
     fn shape(&mut self, s: &Plugin) -> Result<()> {
+        match s.kind.as_str() {
+            "shapegroup" => return self.shapegroup(s),
+            "instance" => return self.instance(s),
+            _ => {}
+        }
         self.read(s);
         let bsdf = s.children.iter().find(|c| c.tag == "bsdf");
         let area = s.children.iter().find(|c| c.tag == "emitter");
@@ -402,6 +412,93 @@ impl Importer {
             other => return Err(self.unsupported(s, other)),
         }
         Ok(())
+    }
+}
+
+impl Importer {
+    /// A `shapegroup` of `obj` and `ply` shapes: each a `[meshes]` entry, placed only by
+    /// the `instance`s that name the group.
+    fn shapegroup(&mut self, g: &Plugin) -> Result<()> {
+        self.read(g);
+        let id =
+            g.id.clone()
+                .ok_or_else(|| g.at.error("a <shape type=\"shapegroup\"> needs an `id`"))?;
+        let mut parts = Vec::new();
+        for (k, s) in g.children.iter().enumerate() {
+            self.read(s);
+            if s.tag != "shape" || !matches!(s.kind.as_str(), "obj" | "ply") {
+                return Err(s.at.error(format!(
+                    "{}: a shapegroup here holds obj and ply shapes only",
+                    s.label()
+                )));
+            }
+            if s.children.iter().any(|c| c.tag == "emitter") {
+                return Err(s
+                    .at
+                    .error("an instanced shape is not sampled as a light here: no emitter on it"));
+            }
+            let material = match s.children.iter().find(|c| c.tag == "bsdf") {
+                Some(b) => self.named_material(b)?,
+                None => self.default_material(),
+            };
+            let file = self
+                .text(s, "filename")?
+                .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
+            let name = format!("{id}_{k}");
+            self.file.meshes.insert(
+                name.clone(),
+                MeshDef {
+                    file: self.path_of(&file),
+                },
+            );
+            parts.push((name, self.to_world(s)?, material));
+        }
+        self.groups.insert(id, parts);
+        Ok(())
+    }
+
+    /// An `instance` of a `shapegroup`: each of its meshes placed by its own map, then the
+    /// instance's. (An instance shades with its faces' normals: see the scene format.)
+    fn instance(&mut self, i: &Plugin) -> Result<()> {
+        self.read(i);
+        let Some(group) = i
+            .children
+            .iter()
+            .find(|c| c.kind == "shapegroup")
+            .and_then(|g| g.id.as_ref())
+        else {
+            return Err(i
+                .at
+                .error("an <shape type=\"instance\"> names its shapegroup by a <ref>"));
+        };
+        let parts = self
+            .groups
+            .get(group)
+            .cloned()
+            .ok_or_else(|| i.at.error(format!("no shapegroup `{group}`")))?;
+        let to_world = self.to_world(i)?;
+        for (mesh, own, material) in parts {
+            self.file.objects.push(ObjectSpec::Instance {
+                mesh,
+                scale: Default::default(),
+                rotate: [0.0; 3],
+                translate: [0.0; 3],
+                matrix: Some(own.then(&to_world).rows()),
+                material,
+            });
+        }
+        Ok(())
+    }
+
+    fn default_material(&mut self) -> String {
+        let name = "default_diffuse".to_string();
+        self.file
+            .materials
+            .entry(name.clone())
+            .or_insert(MaterialSpec::Lambertian {
+                albedo: TextureRef::Color([0.5; 3]),
+            });
+        name
     }
 }
 

@@ -288,3 +288,59 @@ proptest::proptest! {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
+
+#[test]
+fn a_shapegroup_is_read_once_and_placed_by_each_instance() {
+    let group = r#"<scene version="3.0.0">
+    <include filename="metal.xml"/>
+    <shape type="shapegroup" id="crate">
+        <shape type="obj">
+            <string name="filename" value="cube.obj"/>
+            <transform name="to_world"><scale value="0.5"/></transform>
+            <ref id="gold"/>
+        </shape>
+    </shape>
+    <shape type="instance">
+        <ref id="crate"/>
+        <transform name="to_world"><translate x="3"/></transform>
+    </shape>
+    <shape type="instance">
+        <ref id="crate"/>
+        <transform name="to_world"><rotate y="1" angle="90"/></transform>
+    </shape>
+</scene>
+"#;
+    let dir = folder("group", group);
+    let imported = import::mitsuba(&dir.join("scene.xml"), &BTreeMap::new()).unwrap();
+    let f = &imported.file;
+    assert_eq!(f.meshes.len(), 1);
+    let matrices: Vec<_> = f
+        .objects
+        .iter()
+        .map(|o| match o {
+            ObjectSpec::Instance {
+                mesh,
+                matrix,
+                material,
+                ..
+            } => {
+                assert_eq!((mesh.as_str(), material.as_str()), ("crate_0", "gold"));
+                matrix.unwrap()
+            }
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    // Scaled by ½ first, then moved; scaled, then turned a quarter about y.
+    assert_eq!(
+        matrices[0],
+        [[0.5, 0.0, 0.0, 3.0], [0.0, 0.5, 0.0, 0.0], [0.0, 0.0, 0.5, 0.0]]
+    );
+    let r = matrices[1];
+    assert!(
+        (r[0][2] - 0.5).abs() < 1e-12 && (r[2][0] + 0.5).abs() < 1e-12 && r[0][0].abs() < 1e-12,
+        "{r:?}"
+    );
+    let built = f.build::<f64>().unwrap();
+    assert_eq!(built.summary.instances, 2);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
