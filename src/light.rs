@@ -60,7 +60,9 @@ pub struct Incident<F> {
 impl<F: Float> Light<F> {
     /// What the light sends to the point `x` (a shadow ray's origin), or `None` if it sends
     /// nothing there: `x` is the light's own position, or outside a spot's cone.
-    #[inline]
+    // Always inlined: called, it returns the incident light through memory, once per
+    // light at every shading point.
+    #[inline(always)]
     pub fn incident(&self, x: Vec3<F>) -> Option<Incident<F>> {
         match self {
             Self::Point(l) => l.incident(x),

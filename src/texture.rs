@@ -51,12 +51,22 @@ impl<F: Float> Texture<F> {
 
     /// The value at `hit`: at its [`uv`](Hit::uv), which the scene fills in when a
     /// material [reads coordinates](crate::Material::reads_coordinates).
-    #[inline]
+    #[inline(always)]
     pub fn eval(&self, hit: &Hit<F>) -> Color<F> {
         match self {
             Self::Constant(c) => *c,
-            Self::Checkerboard(c) => c.eval(hit.uv),
-            Self::Image(i) => i.eval(hit.uv),
+            _ => self.eval_varying(hit.uv),
+        }
+    }
+
+    /// [`Texture::eval`] of the kinds that vary, out of line and given `uv` alone: the
+    /// constant's path stays short, and a caller's hit need not be in memory.
+    #[inline(never)]
+    fn eval_varying(&self, uv: [F; 2]) -> Color<F> {
+        match self {
+            Self::Constant(c) => *c,
+            Self::Checkerboard(c) => c.eval(uv),
+            Self::Image(i) => i.eval(uv),
         }
     }
 

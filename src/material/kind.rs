@@ -90,72 +90,70 @@ macro_rules! each_material {
 impl<F: Float> Material<F> for MaterialKind<F> {
     #[inline(always)]
     fn lobes(&self) -> Lobes {
-        each_material!(self, m => m.lobes(); self.shared().lobes())
+        each_material!(self, m => m.lobes(); Shared(self).lobes())
     }
     #[inline(always)]
     fn reads_coordinates(&self) -> bool {
-        each_material!(self, m => m.reads_coordinates(); self.shared().reads_coordinates())
+        each_material!(self, m => m.reads_coordinates(); Shared(self).reads_coordinates())
     }
     #[inline(always)]
     fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
-        each_material!(self, m => m.eval(hit, wo, wi); self.shared().eval(hit, wo, wi))
+        each_material!(self, m => m.eval(hit, wo, wi); Shared(self).eval(*hit, wo, wi))
     }
     #[inline(always)]
     fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
-        each_material!(self, m => m.pdf(hit, wo, wi); self.shared().pdf(hit, wo, wi))
+        each_material!(self, m => m.pdf(hit, wo, wi); Shared(self).pdf(*hit, wo, wi))
     }
     #[inline(always)]
     fn emits(&self) -> Option<Emission<F>> {
-        each_material!(self, m => m.emits(); self.shared().emits())
+        each_material!(self, m => m.emits(); Shared(self).emits())
     }
 }
 
 impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for MaterialKind<F> {
     #[inline(always)]
     fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
-        each_material!(self, m => m.sample(hit, wo, rng); Shared(self).sample(hit, wo, rng))
+        each_material!(self, m => m.sample(hit, wo, rng); {
+            // Written into a slot of this arm's own: the call's return slot would otherwise be
+            // the match's, and keep every material's sample in memory.
+            let mut sample = None;
+            Shared(self).sample(*hit, wo, rng, &mut sample);
+            sample
+        })
     }
 }
 
 /// A [`MaterialKind`] asked out of line: every method one call that matches on every
 /// variant (the spec's too, so no arm is left out, though [`MaterialKind`] sends only the
-/// others here).
+/// others here). The hit goes by value, a copy made in the branch that calls: by
+/// reference, the caller's hit would have to live in memory on every path.
+#[derive(Clone, Copy)]
 struct Shared<'a, F>(&'a MaterialKind<F>);
 
-impl<F: Float> MaterialKind<F> {
-    #[inline(always)]
-    fn shared(&self) -> Shared<'_, F> {
-        Shared(self)
-    }
-}
-
-impl<F: Float> Material<F> for Shared<'_, F> {
+impl<F: Float> Shared<'_, F> {
     #[inline(never)]
-    fn lobes(&self) -> Lobes {
+    fn lobes(self) -> Lobes {
         each_material!(self.0, m => m.lobes())
     }
     #[inline(never)]
-    fn reads_coordinates(&self) -> bool {
+    fn reads_coordinates(self) -> bool {
         each_material!(self.0, m => m.reads_coordinates())
     }
     #[inline(never)]
-    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
-        each_material!(self.0, m => m.eval(hit, wo, wi))
+    fn eval(self, hit: Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        each_material!(self.0, m => m.eval(&hit, wo, wi))
     }
     #[inline(never)]
-    fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
-        each_material!(self.0, m => m.pdf(hit, wo, wi))
+    fn pdf(self, hit: Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
+        each_material!(self.0, m => m.pdf(&hit, wo, wi))
     }
     #[inline(never)]
-    fn emits(&self) -> Option<Emission<F>> {
+    fn emits(self) -> Option<Emission<F>> {
         each_material!(self.0, m => m.emits())
     }
-}
-
-impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Shared<'_, F> {
     #[inline(never)]
-    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
-        each_material!(self.0, m => m.sample(hit, wo, rng))
+    fn sample<R: Rng + ?Sized>(self, hit: Hit<F>, wo: Vec3<F>, rng: &mut R, out: &mut Option<BsdfSample<F>>) {
+        *out = each_material!(self.0, m => m.sample(&hit, wo, rng));
     }
 }
 

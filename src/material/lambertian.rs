@@ -138,13 +138,19 @@ impl<F: Float> Material<F> for Lambertian<F> {
     }
 
     /// `(A/π, cos θᵢ)`, `cos θᵢ = N·wi` with the shading normal; `None` below the surface.
-    #[inline]
+    // Always inlined, as `sample`: called, they take the renderer's hit by reference,
+    // which keeps every hit in memory.
+    #[inline(always)]
     fn eval(&self, hit: &Hit<F>, _: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
         let cos = hit.shading_normal.dot(wi);
-        (cos > F::zero()).then(|| Eval {
-            colour: self.albedo.eval(hit) * (F::one() / lit::<F>(PI)),
-            scale: cos,
-        })
+        if cos > F::zero() {
+            Some(Eval {
+                colour: self.albedo.eval(hit) * (F::one() / lit::<F>(PI)),
+                scale: cos,
+            })
+        } else {
+            None
+        }
     }
 
     #[inline]
@@ -161,7 +167,7 @@ impl<F: Float> Material<F> for Lambertian<F> {
 impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Lambertian<F> {
     /// A cosine-distributed direction about the shading normal, by the sampler chosen
     /// (the specification's rejection method draws a variable count of numbers).
-    #[inline]
+    #[inline(always)]
     fn sample(&self, hit: &Hit<F>, _: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
         let n = hit.shading_normal;
         let d = match self.sampler {

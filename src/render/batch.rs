@@ -197,30 +197,36 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             self.next_rays.clear();
             self.next_pixels.clear();
             self.next_arrivals.clear();
-            // Each ray is shaded as soon as its hit is known, in the rays' order.
+            // Each ray is shaded as soon as its hit is known, in the rays' order. Inlined
+            // whatever its size: called, it takes the hit through memory.
             let (rays, pixels, arrivals) = (&self.rays, &self.pixels, &self.arrivals);
-            scene.hit_all(rays, &mut self.near, |i, hit| {
-                let pixel = pixels[i];
-                let rng = &mut self.rngs[pixel as usize];
-                match tracer.shade(&rays[i], hit, depth as u32, arrivals[i], rng) {
-                    Step::Done(colour) => self.ends[pixel as usize] = colour,
-                    Step::Go {
-                        ray,
-                        direct,
-                        weight,
-                        arrival,
-                    } => {
-                        log.push(Bounce {
-                            pixel,
+            scene.hit_all(
+                rays,
+                &mut self.near,
+                #[inline(always)]
+                |i, hit| {
+                    let pixel = pixels[i];
+                    let rng = &mut self.rngs[pixel as usize];
+                    match tracer.shade(&rays[i], hit, depth as u32, arrivals[i], rng) {
+                        Step::Done(colour) => self.ends[pixel as usize] = colour,
+                        Step::Go {
+                            ray,
                             direct,
                             weight,
-                        });
-                        self.next_rays.push(ray);
-                        self.next_pixels.push(pixel);
-                        self.next_arrivals.push(arrival);
+                            arrival,
+                        } => {
+                            log.push(Bounce {
+                                pixel,
+                                direct,
+                                weight,
+                            });
+                            self.next_rays.push(ray);
+                            self.next_pixels.push(pixel);
+                            self.next_arrivals.push(arrival);
+                        }
                     }
-                }
-            });
+                },
+            );
             std::mem::swap(&mut self.rays, &mut self.next_rays);
             std::mem::swap(&mut self.pixels, &mut self.next_pixels);
             std::mem::swap(&mut self.arrivals, &mut self.next_arrivals);

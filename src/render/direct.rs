@@ -35,7 +35,14 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
                     intensity,
                     falloff,
                 },
-            )) = toward(hit, above, transmits, |x| light.incident(x), |i| i.direction)
+            )) = toward(
+                hit,
+                above,
+                transmits,
+                #[inline(always)]
+                |x| light.incident(x),
+                |i| i.direction,
+            )
             else {
                 continue;
             };

@@ -19,7 +19,7 @@ use crate::bvh::{Bvh, Streams};
 use crate::float::Float;
 use crate::material::Material;
 use crate::ray::Ray;
-use crate::shape::{Hit, Intersection};
+use crate::shape::{Coordinates, Hit, Intersection};
 pub(crate) use packet::Found;
 use packet::{Key, Packer, Packet, kind};
 
@@ -212,22 +212,19 @@ fn record<F: Float, S: Layout<F>, M: Material<F>>(
 ) -> Hit<F> {
     let record = object.shape.finish(ray, hit);
     if object.material.reads_coordinates() {
-        with_coordinates(&object.shape, ray, hit, record)
+        record.with(coordinates(&object.shape, ray, hit))
     } else {
         record
     }
 }
 
-/// `record` with the shape's coordinates: out of line, so the path of materials that read
-/// none stays as short as it was.
+/// The shape's coordinates at `hit`: out of line, so the path of materials that read none
+/// stays as short as it was. It finishes its own copy of the record (the same, bit for
+/// bit) and returns the coordinates alone: a record passed to a call or returned from one
+/// would be kept in memory on every path.
 #[inline(never)]
-fn with_coordinates<F: Float, S: Layout<F>>(
-    shape: &S,
-    ray: &Ray<F>,
-    hit: &Intersection<F>,
-    record: Hit<F>,
-) -> Hit<F> {
-    record.with(shape.coordinates(ray, hit, &record))
+fn coordinates<F: Float, S: Layout<F>>(shape: &S, ray: &Ray<F>, hit: &Intersection<F>) -> Coordinates<F> {
+    shape.coordinates(ray, hit, &shape.finish(ray, hit))
 }
 
 #[cfg(test)]

@@ -224,7 +224,9 @@ impl<F: Float> Hittable<F> for Instance<F> {
         self.nearest(ray, t_max)
     }
 
-    #[inline]
+    // Always inlined: out of line it returns the record through memory, which keeps
+    // every shape's record (a sphere's too) in memory.
+    #[inline(always)]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         let v = self.triangle(hit.part);
         record(&v, checked_normal(v), ray, hit.t, hit.coords, None)

@@ -281,7 +281,9 @@ impl<F: Float> Hittable<F> for Mesh<F> {
         nearest
     }
 
-    #[inline]
+    // Always inlined: out of line it returns the record through memory, which keeps
+    // every shape's record (a sphere's too) in memory.
+    #[inline(always)]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         let v = self.triangle(hit.part);
         let normals = self.corner_normals(hit.part);
