@@ -36,14 +36,18 @@ MODES = {
                          "scenes/point_lights.toml", "scenes/cornell_box.toml"]},
     "full": {"width": 128, "spp": 1024, "scenes": None},  # None: every scene there is
 }
-DRAGON_MESH = ROOT / "assets/meshes/dragon_vrip_res2.ply"
 
 
 def all_scenes() -> list[Path]:
     found = sorted((ROOT / "scenes").glob("*.toml")) + sorted((HERE / "scenes").glob("*.toml"))
-    # The dragon needs a fetched mesh (tools/fetch_meshes.sh); without it, it is skipped
-    # and the report says so.
-    return [p for p in found if p.stem != "dragon" or DRAGON_MESH.exists()]
+    # The dragon, the bunny need fetched meshes (tools/fetch_meshes.sh); without them their
+    # scenes are skipped and the report says so.
+    return [p for p in found if not scene_model.missing_files(p)]
+
+
+def skipped_scenes() -> list[str]:
+    found = sorted((ROOT / "scenes").glob("*.toml")) + sorted((HERE / "scenes").glob("*.toml"))
+    return [p.stem for p in found if scene_model.missing_files(p)]
 
 
 def compare_scene(scene, work: Path, width: int, spp: int, precisions, rows, pngs):
@@ -137,7 +141,7 @@ def main() -> int:
     probe = analytic.fresnel_probe(work)
     elapsed = time.perf_counter() - start
     ok = report.write(out, mode, cfg, rows, pngs, furnace, probe, renders.TIMES, elapsed,
-                      skipped_dragon=not DRAGON_MESH.exists())
+                      skipped=[] if args.scenes or cfg["scenes"] else skipped_scenes())
     print(f"{'PASS' if ok else 'FAIL'}: results in {out} ({elapsed:.0f} s)")
     return 0 if ok else 1
 
