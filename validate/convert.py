@@ -18,9 +18,14 @@
 | point light, intensity I               | `point`, intensity I (both: A/pi I cos/d^2)            |
 | emissive, radiance L, albedo A         | `area` emitter L (front face only) on a twosided       |
 |                                        | `diffuse` A; `max_depth` as is (see mitsuba_depth)     |
+| a lit background (envmap, light = true)| `max_depth` as is: every light then counts on at most  |
+|                                        | max_depth segments in ours (scene_depth)               |
+| Mitsuba's materials, textures          | convert_materials.py (its own table)                   |
+| envmap, directional, spot, thin lens,  | convert_more.py (its own table)                        |
+| plane/triangle uv, mesh vn/vt, instance|                                                        |
 
 Each mapping is tested in validate/tests/ (test_camera, test_depth_and_light, test_envmap,
-test_scene_files) and by the comparison itself (compare.py).
+test_scene_files, test_textures, test_lights_lens) and by the comparison itself (compare.py).
 """
 
 from __future__ import annotations
