@@ -12,7 +12,9 @@
 |                                            | use_shadowing_function = false (our docs' handling)  |
 | checkerboard texture, colour key           | checkerboard, color0/color1 as written, to_uv        |
 | checkerboard texture, scalar key (alpha)   | checkerboard with color0 and color1 SWAPPED: Mitsuba's|
-|                                            | eval_1 swaps them (test_textures.py)                 |
+|                                            | eval_1 swaps them (test_textures.py); each made grey |
+|                                            | of its first channel (ours reads that, eval_1 the    |
+|                                            | mean)                                                |
 | image texture (wrap, raw, scale, offset)   | bitmap, wrap_mode, raw, bilinear, to_uv              |
 | texture scale s, offset o: (s u + o)       | to_uv = translate(o) . scale(s)                      |
 
@@ -62,7 +64,9 @@ def texture(value, textures: dict, scalar: bool = False, normal_map: bool = Fals
             # Mitsuba's scalar lookup (eval_1) returns color1 where its colour lookup
             # returns color0; ours does not swap (docs/SCENE_FORMAT.md). Swapping here makes
             # both renderers give the same alpha at every uv (test_textures.py).
-            c0, c1 = c1, c0
+            # And its eval_1 of an RGB colour is the channels' mean, where ours reads the
+            # first channel: grey colours of that channel give both the same number.
+            c0, c1 = [float(c1[0])] * 3, [float(c0[0])] * 3
         return {"type": "checkerboard", "color0": rgb(c0), "color1": rgb(c1), "to_uv": to_uv(t)}
     if t["type"] == "image":
         return {"type": "bitmap", "filename": t["file"], "raw": bool(t.get("raw", normal_map)),

@@ -192,6 +192,13 @@ def load_placed_attrs(obj: dict):
     for .obj) maps v to 1 - v. Only OBJ files carry attributes here (a PLY's are not read)."""
     path = Path(obj["file"])
     if path.suffix.lower() != ".obj":
+        # Not converted yet: refuse rather than render a smooth or textured PLY faceted.
+        head = path.read_bytes()[:4096].split(b"end_header")[0].decode("ascii", "replace")
+        props = {line.split()[-1] for line in head.splitlines() if line.startswith("property")}
+        if not obj.get("face_normals", False) and {"nx", "ny", "nz"} <= props:
+            raise ValueError(f"{path}: a PLY file's vertex normals are not converted yet")
+        if props & {"u", "s", "texture_u"}:
+            raise ValueError(f"{path}: a PLY file's texture coordinates are not converted yet")
         v, t = load_placed(obj)
         return v, t, None, None
     verts, faces, normals, uvs = _read_obj_attrs(path)

@@ -39,8 +39,9 @@ def test_checkerboard_colour_lookup_is_ours(u, v):
 def test_checkerboard_scalar_lookup_is_ours_after_the_swap(u, v):
     """An alpha texture: Mitsuba's eval_1 returns color1 where eval returns color0, so the
     converter swaps them; without the swap this test fails (checked below)."""
-    t = {"type": "checkerboard", "color0": [0.05] * 3, "color1": [0.4] * 3, "scale": 2}
-    want = _ours_checker(0.05, 0.4, u, v, (2, 2))
+    t = {"type": "checkerboard", "color0": [0.05, 0.3, 0.3], "color1": [0.4, 0.1, 0.2],
+         "scale": 2}
+    want = _ours_checker(0.05, 0.4, u, v, (2, 2))  # ours reads the first channel
     swapped = mi.load_dict(cm.texture(t, {}, scalar=True))
     assert swapped.eval_1(_si(u, v)) == pytest.approx(want, abs=1e-6)
     plain = mi.load_dict(cm.texture(t, {}))
