@@ -1,7 +1,7 @@
 """The cross-check against Mitsuba 3: every scene, both precisions, the power checks and the
 analytic checks, into a table. Run through validate/run.sh (which sets up Mitsuba first).
 
-    python validate/compare.py --quick            # CI: 64 px wide, 256 spp, four scenes
+    python validate/compare.py --quick            # CI: 64 px wide, 256 spp, nine scenes
     python validate/compare.py                    # full: every scene, 128 px, 1024 spp
     python validate/compare.py my_scene.toml ...  # those scenes (with the mode's settings)
 
@@ -165,7 +165,7 @@ def feature_power_checks(check, ours_f64, refs, mode="full"):
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scenes", nargs="*", help="scene files (default: the mode's)")
-    ap.add_argument("--quick", action="store_true", help="CI mode: small, four scenes")
+    ap.add_argument("--quick", action="store_true", help="CI mode: small, nine scenes")
     ap.add_argument("--out", type=Path, help="results folder (default: validate/work/<mode>"
                     " for quick, validate/results for full)")
     ap.add_argument("--work", type=Path, default=HERE / "work", help="render cache")
