@@ -18,9 +18,14 @@
 | point light, intensity I               | `point`, intensity I (both: A/pi I cos/d^2)            |
 | emissive, radiance L, albedo A         | `area` emitter L (front face only) on a twosided       |
 |                                        | `diffuse` A; `max_depth` as is (see mitsuba_depth)     |
+| a lit background (envmap, light = true)| `max_depth` as is: every light then counts on at most  |
+|                                        | max_depth segments in ours (scene_depth)               |
+| Mitsuba's materials, textures          | convert_materials.py (its own table)                   |
+| envmap, directional, spot, thin lens,  | convert_more.py (its own table)                        |
+| plane/triangle uv, mesh vn/vt, instance|                                                        |
 
 Each mapping is tested in validate/tests/ (test_camera, test_depth_and_light, test_envmap,
-test_scene_files) and by the comparison itself (compare.py).
+test_scene_files, test_textures, test_lights_lens) and by the comparison itself (compare.py).
 """
 
 from __future__ import annotations
@@ -28,9 +33,11 @@ from __future__ import annotations
 import mitsuba as mi
 import numpy as np
 
+import convert_materials
+import convert_more
 import meshio
 import spec_sensor
-from scene_model import Scene
+from scene_model import MITSUBA_MATERIALS, Scene
 
 # An infinite plane becomes a square reaching this many scene units from the eye in each
 # direction (plane_mesh). A camera ray then misses where ours would hit beyond ~1e6 units:
@@ -59,8 +66,15 @@ def mitsuba_depth(max_depth: int, surface_emitters: bool = False) -> int:
 
 
 def scene_depth(scene: Scene, max_depth: int) -> int:
-    """Mitsuba's `max_depth` for ours in `scene`."""
-    return mitsuba_depth(max_depth, surface_emitters(scene))
+    """Mitsuba's `max_depth` for ours in `scene`. Where the background is a light (an
+    envmap, or `light = true`), every light of ours counts on at most `max_depth` segments,
+    point lights too (src/scene.rs set_background_sampled): Mitsuba's max_depth unchanged."""
+    return mitsuba_depth(max_depth, surface_emitters(scene) or background_sampled(scene))
+
+
+def background_sampled(scene: Scene) -> bool:
+    bg = scene.background
+    return bg["type"] == "envmap" or bool(bg.get("light", False))
 
 
 def surface_emitters(scene: Scene) -> bool:
@@ -68,7 +82,8 @@ def surface_emitters(scene: Scene) -> bool:
     sky and point lights the other (mitsuba_depth), so it may have neither."""
     emits = any(scene.materials[o["material"]]["type"] == "emissive" for o in scene.objects)
     bg = scene.background
-    if emits and (scene.lights or bg["type"] == "sky" or any(c > 0 for c in bg["color"])):
+    lit_bg = bg["type"] != "solid" or any(c > 0 for c in bg["color"])
+    if emits and not background_sampled(scene) and (scene.lights or lit_bg):
         raise ValueError(f"{scene.name}: emissive surfaces beside point lights or a lit "
                          "background count max_depth two ways; Mitsuba's one max_depth "
                          "cannot match both")
@@ -84,9 +99,14 @@ def sky_bitmap(horizon, zenith, rows: int = SKY_ROWS, cols: int = SKY_COLUMNS) -
     return np.repeat(col[:, None, :], cols, axis=1).astype(np.float32)
 
 
-def bsdf(m: dict) -> dict:
+def bsdf(m: dict, scene: Scene | None = None) -> dict:
+    textures = scene.textures if scene else {}
+    if m["type"] in MITSUBA_MATERIALS:
+        return convert_materials.mitsuba_bsdf(m, textures, scene.materials,
+                                              lambda n: bsdf(n, scene))
     if m["type"] in ("lambertian", "emissive"):  # an emitter reflects as a matte surface
-        return {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": rgb(m["albedo"])}}
+        albedo = convert_materials.texture(m["albedo"], textures)
+        return {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": albedo}}
     if m["type"] == "mirror":
         return {"type": "twosided", "bsdf": {"type": "conductor", "material": "none",
                                              "specular_reflectance": rgb(m["albedo"])}}
@@ -146,17 +166,24 @@ def emitter(m: dict) -> dict | None:
     return {"type": "area", "radiance": rgb(m["radiance"])}
 
 
-def _mesh(name: str, verts: np.ndarray, tris: np.ndarray, material: dict) -> mi.Mesh:
+def _mesh(name: str, verts: np.ndarray, tris: np.ndarray, material: dict,
+          scene: Scene | None = None, normals=None, uvs=None) -> mi.Mesh:
+    """An in-memory Mitsuba mesh; face normals unless vertex `normals` are given."""
     props = mi.Properties()
-    props["bsdf"] = mi.load_dict(bsdf(material))
+    props["bsdf"] = mi.load_dict(bsdf(material, scene))
     if (e := emitter(material)) is not None:
         props["emitter"] = mi.load_dict(e)
-    props["face_normals"] = True
+    props["face_normals"] = normals is None
     mesh = mi.Mesh(name, len(verts), len(tris), props=props,
-                   has_vertex_normals=False, has_vertex_texcoords=False)
+                   has_vertex_normals=normals is not None,
+                   has_vertex_texcoords=uvs is not None)
     params = mi.traverse(mesh)
     params["vertex_positions"] = verts.astype(np.float32).ravel()
     params["faces"] = tris.astype(np.uint32).ravel()
+    if normals is not None:
+        params["vertex_normals"] = normals.astype(np.float32).ravel()
+    if uvs is not None:
+        params["vertex_texcoords"] = uvs.astype(np.float32).ravel()
     params.update()
     return mesh
 
@@ -181,10 +208,11 @@ def sensor(scene: Scene, width: int, spp: int, shift: float = 0.0) -> dict:
     # src/camera/look_at.rs: D ~ -w + ((x+1/2)/nx - 1/2) h_w u + (1/2 - (y+1/2)/ny) h_h v,
     # h_h = 2 tan(vfov/2), h_w = h_h nx/ny: Mitsuba's perspective sensor with its vertical
     # field of view over the film's edges, the same frame (look_at) and aspect nx/ny.
+    # A thin lens (aperture > 0) is Mitsuba's thinlens with the same frame (convert_more.lens).
     return {"type": "perspective", "fov_axis": "y", "fov": cam["vfov"], "film": film,
             "sampler": sampler, "near_clip": 1e-6, "far_clip": 1e30,
             "to_world": mi.ScalarTransform4f().look_at(origin=cam["from"], target=cam["at"],
-                                                      up=cam["up"])}
+                                                      up=cam["up"])} | convert_more.lens(cam)
 
 
 def to_mitsuba(scene: Scene, width: int | None = None, spp: int = 64,
@@ -205,28 +233,38 @@ def to_mitsuba(scene: Scene, width: int | None = None, spp: int = 64,
     if bg["type"] == "sky":
         bmp = mi.Bitmap(sky_bitmap(bg["horizon"], bg["zenith"]))
         out["sky"] = {"type": "envmap", "bitmap": bmp, "scale": 1.0}
+    elif bg["type"] == "envmap":
+        out["sky"] = convert_more.envmap(bg)
     elif any(c > 0 for c in bg["color"]):
         out["sky"] = {"type": "constant", "radiance": rgb(bg["color"])}
     for k, light in enumerate(scene.lights):
-        out[f"light_{k}"] = {"type": "point", "position": light["position"],
-                             "intensity": rgb(light["intensity"])}
-    tris: dict[str, list] = {}
+        out[f"light_{k}"] = convert_more.light(light)
+    tris: dict[str, list] = {}  # face-normal triangles, one Mitsuba mesh per material
     for k, o in enumerate(scene.objects):
         m = scene.materials[o["material"]]
+        uv = convert_more.reads_uv(m, scene)  # only then are coordinates given
         if o["type"] == "sphere":
             out[f"object_{k}"] = {"type": "sphere", "center": [float(c) for c in o["center"]],
-                                  "radius": float(o["radius"]), "bsdf": bsdf(m)}
+                                  "radius": float(o["radius"]), "bsdf": bsdf(m, scene)}
             if (e := emitter(m)) is not None:
                 out[f"object_{k}"]["emitter"] = e
         elif o["type"] == "plane":
             v, t = plane_mesh(o["point"], o["normal"], eye(scene))
-            out[f"object_{k}"] = _mesh(f"plane_{k}", v, t, m)
-        elif o["type"] == "triangle":
-            v = np.array([o["a"], o["b"], o["c"]], dtype=np.float64)
-            tris.setdefault(o["material"], []).append((v, np.array([[0, 1, 2]])))
-        elif o["type"] == "mesh":
-            v, t = meshio.load_placed(o)
-            tris.setdefault(o["material"], []).append((v, t))
+            uvs = convert_more.plane_uv(v, o["point"], o["normal"]) if uv else None
+            out[f"object_{k}"] = _mesh(f"plane_{k}", v, t, m, scene, uvs=uvs)
+        elif o["type"] in ("triangle", "mesh", "instance"):
+            if o["type"] == "triangle":
+                v, t, n, uvs = np.array([o["a"], o["b"], o["c"]], float), np.array([[0, 1, 2]]), None, None
+            else:
+                mo = convert_more.instance_object(o, scene) if o["type"] == "instance" else o
+                v, t, n, uvs = meshio.load_placed_attrs(mo)
+            if uv and uvs is None:  # a triangle's (and a mesh without vt's) barycentric uv
+                n = None if n is None else n[t.ravel()]  # unshared with the vertices
+                v, t, uvs = convert_more.barycentric_uv(v, t)
+            if n is not None or uvs is not None:
+                out[f"object_{k}"] = _mesh(f"mesh_{k}", v, t, m, scene, normals=n, uvs=uvs)
+            else:
+                tris.setdefault(o["material"], []).append((v, t))
         else:
             raise ValueError(f"unknown object type {o['type']!r}")
     for name, parts in tris.items():
@@ -236,7 +274,7 @@ def to_mitsuba(scene: Scene, width: int | None = None, spp: int = 64,
             faces.append(t + base)
             base += len(v)
         out[f"mesh_{len(out)}"] = _mesh(name, np.concatenate(verts), np.concatenate(faces),
-                                        scene.materials[name])
+                                        scene.materials[name], scene)
     return out
 
 

@@ -157,6 +157,64 @@ def load_placed(obj: dict) -> tuple[np.ndarray, np.ndarray]:
     return placed, triangles(placed, faces)
 
 
+def _read_obj_attrs(path: Path):
+    """An OBJ file with its vt and vn: each distinct v/vt/vn a face names becomes one vertex
+    (as src/mesh/ reads it). Returns positions, faces, normals or None, uvs or None."""
+    pos, tex, nor, keys, faces = [], [], [], {}, []
+    for line in path.read_text(errors="replace").splitlines():
+        parts = line.split()
+        if not parts:
+            continue
+        if parts[0] in ("v", "vn"):
+            (pos if parts[0] == "v" else nor).append([float(x) for x in parts[1:4]])
+        elif parts[0] == "vt":
+            tex.append([float(x) for x in parts[1:3]])
+        elif parts[0] == "f":
+            face = []
+            for token in parts[1:]:
+                idx = (token.split("/") + ["", ""])[:3]
+                lists = (pos, tex, nor)
+                key = tuple(None if not i else (int(i) - 1 if int(i) > 0 else len(l) + int(i))
+                            for i, l in zip(idx, lists))
+                face.append(keys.setdefault(key, len(keys)))
+            faces.append(face)
+    order = sorted(keys, key=keys.get)
+    v = np.array([pos[k[0]] for k in order], dtype=np.float64).reshape(-1, 3)
+    uv = np.array([tex[k[1]] for k in order]) if tex and all(k[1] is not None for k in order) else None
+    n = np.array([nor[k[2]] for k in order]) if nor and all(k[2] is not None for k in order) else None
+    return v, faces, n, uv
+
+
+def load_placed_attrs(obj: dict):
+    """A mesh object with its vertex normals and texture coordinates, as our renderer
+    uses them: (vertices, triangles, normals or None, uvs or None). Normals are placed by
+    R S^-1 and normalised; `face_normals` drops them; `flip_tex_coords` (default: true
+    for .obj) maps v to 1 - v. Only OBJ files carry attributes here (a PLY's are not read)."""
+    path = Path(obj["file"])
+    if path.suffix.lower() != ".obj":
+        # Not converted yet: refuse rather than render a smooth or textured PLY faceted.
+        head = path.read_bytes()[:4096].split(b"end_header")[0].decode("ascii", "replace")
+        props = {line.split()[-1] for line in head.splitlines() if line.startswith("property")}
+        if not obj.get("face_normals", False) and {"nx", "ny", "nz"} <= props:
+            raise ValueError(f"{path}: a PLY file's vertex normals are not converted yet")
+        if props & {"u", "s", "texture_u"}:
+            raise ValueError(f"{path}: a PLY file's texture coordinates are not converted yet")
+        v, t = load_placed(obj)
+        return v, t, None, None
+    verts, faces, normals, uvs = _read_obj_attrs(path)
+    placed = place(verts, obj["scale"], obj["rotate"], obj["translate"])
+    tris = triangles(placed, faces)
+    if normals is not None and not obj.get("face_normals", False):
+        normals = place(normals, [1.0 / s for s in obj["scale"]], obj["rotate"], [0, 0, 0])
+        length = np.linalg.norm(normals, axis=1, keepdims=True)
+        normals = np.where(length > 0, normals / np.where(length > 0, length, 1), 0.0)
+    else:
+        normals = None
+    if uvs is not None and obj.get("flip_tex_coords", True):
+        uvs = np.stack([uvs[:, 0], 1.0 - uvs[:, 1]], axis=1)
+    return placed, tris, normals, uvs
+
+
 if __name__ == "__main__":  # a quick look: python meshio.py FILE
     file = Path(sys.argv[1])
     v, f = _read_ply(file) if file.suffix.lower() == ".ply" else _read_obj(file)

@@ -20,7 +20,8 @@ import ours
 from scene_model import Scene, to_toml
 
 HERE = Path(__file__).resolve().parent
-_CONVERTER_SOURCES = [HERE / "convert.py", HERE / "spec_sensor.py", HERE / "meshio.py"]
+_CONVERTER_SOURCES = [HERE / "convert.py", HERE / "convert_materials.py", HERE / "convert_more.py",
+                      HERE / "spec_sensor.py", HERE / "meshio.py"]
 TIMES: list[dict] = []  # one entry per render actually made: who, scene, seconds
 
 

@@ -59,7 +59,7 @@ def _commit() -> str:
 
 
 def write(out: Path, mode: str, cfg: dict, rows, pngs, furnace, probe, times, elapsed,
-          skipped_dragon: bool) -> bool:
+          skipped: list) -> bool:
     out.mkdir(parents=True, exist_ok=True)
     with open(out / "comparison.csv", "w", newline="") as f:
         w = csv.DictWriter(f, COLUMNS)
@@ -102,9 +102,9 @@ def write(out: Path, mode: str, cfg: dict, rows, pngs, furnace, probe, times, el
           "`t_r, t_g, t_b`: whole-image t per channel; `rmse_ratio`: RMSE of the difference "
           "over the RMSE noise alone would give (about 1 when they agree). "
           "Method: validate/stats.py; conventions: validate/convert.py.", ""]
-    if skipped_dragon:
-        md += ["The dragon scene was skipped: its mesh is not fetched "
-               "(`bash tools/fetch_meshes.sh`).", ""]
+    if skipped:
+        md += [f"Skipped, their meshes not fetched (`bash tools/fetch_meshes.sh`): "
+               f"{', '.join(skipped)}.", ""]
     md += ["## Agreement", ""] + _md_table(agree, cols) + [""]
     if schl:
         md += ["## What Schlick's approximation changes", "",

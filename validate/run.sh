@@ -3,7 +3,7 @@
 # git-ignored virtual environment (validate/.venv), builds the renderer, tests the
 # converter's conventions, then compares every scene (validate/compare.py).
 #
-#   bash validate/run.sh --quick          # CI: small images, four scenes (~1 min here)
+#   bash validate/run.sh --quick          # CI: small images, nine scenes (~1.5 min here)
 #   bash validate/run.sh                  # full: every scene, into validate/results/
 #   bash validate/run.sh my_scene.toml    # any scene file, with the full mode's settings
 #   bash validate/run.sh --quick my.toml  # ... or the quick mode's

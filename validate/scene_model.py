@@ -18,6 +18,10 @@ from pathlib import Path
 
 SKY_HORIZON = [1.0, 1.0, 1.0]  # src/background.rs, Background::default
 SKY_ZENITH = [0.5, 0.7, 1.0]
+# Mitsuba's own materials: kept as written (same keys in both renderers), converted by
+# convert_materials.py.
+MITSUBA_MATERIALS = ("conductor", "rough_conductor", "rough_dielectric", "thin_dielectric",
+                     "plastic", "rough_plastic", "two_sided", "normal_map")
 
 
 @dataclass
@@ -31,6 +35,8 @@ class Scene:
     materials: dict
     objects: list
     lights: list = field(default_factory=list)
+    textures: dict = field(default_factory=dict)  # [textures.NAME], as written
+    meshes: dict = field(default_factory=dict)  # [meshes.NAME], as written
 
     @property
     def name(self) -> str:
@@ -79,6 +85,10 @@ def load(path: str | Path) -> Scene:
         bg["zenith"] = _f3(bg.get("zenith", SKY_ZENITH))
     elif bg["type"] == "solid":
         bg["color"] = _f3(bg["color"])
+    elif bg["type"] == "envmap":
+        bg["file"] = str((path.parent / bg["file"]).resolve())
+        bg["scale"] = float(bg.get("scale", 1.0))
+        bg["rotate"] = _f3(bg.get("rotate", [0, 0, 0]))
     else:
         raise ValueError(f"{path}: unknown background type {bg['type']!r}")
 
@@ -90,20 +100,25 @@ def load(path: str | Path) -> Scene:
             m["albedo"] = _f3(m.get("albedo", [1, 1, 1]))
             m.setdefault("fresnel", "schlick")
         elif m["type"] in ("mirror", "lambertian"):
-            m["albedo"] = _f3(m["albedo"])
+            # a lambertian's albedo may be a texture (its name or a table)
+            m["albedo"] = _f3(m["albedo"]) if isinstance(m["albedo"], list) else m["albedo"]
         elif m["type"] == "emissive":
             m["radiance"] = _f3(m["radiance"])
             m["albedo"] = _f3(m.get("albedo", [0, 0, 0]))
             m.setdefault("two_sided", False)
-        else:
+        elif m["type"] not in MITSUBA_MATERIALS:
             raise ValueError(f"{path}: material {name}: unknown type {m['type']!r}")
-        materials[name] = m
+        materials[name] = _resolve_files(m, path.parent)
+    textures = {n: _resolve_files(dict(t), path.parent)
+                for n, t in raw.get("textures", {}).items()}
+    meshes = {n: _resolve_files(dict(t), path.parent) for n, t in raw.get("meshes", {}).items()}
 
     objects = []
     for o in raw.get("objects", []):
         o = dict(o)
-        if o["type"] == "mesh":
-            o["file"] = str((path.parent / o["file"]).resolve())
+        if o["type"] in ("mesh", "instance"):
+            if o["type"] == "mesh":
+                o["file"] = str((path.parent / o["file"]).resolve())
             s = o.get("scale", 1.0)
             o["scale"] = _f3(s) if isinstance(s, list) else [float(s)] * 3
             o["rotate"] = _f3(o.get("rotate", [0, 0, 0]))
@@ -111,9 +126,37 @@ def load(path: str | Path) -> Scene:
         if o["material"] not in materials:
             raise ValueError(f"{path}: unknown material {o['material']!r}")
         objects.append(o)
-    lights = [{"position": _f3(l["position"]), "intensity": _f3(l["intensity"])}
-              for l in raw.get("lights", [])]
-    return Scene(path, render, cam, bg, materials, objects, lights)
+    lights = []
+    for l in raw.get("lights", []):
+        l = dict(l)
+        l.setdefault("type", "point")
+        if l["type"] == "spot":  # docs/SCENE_FORMAT.md's defaults, written out
+            l.setdefault("cutoff_angle", 20.0)
+            l.setdefault("beam_width", 0.75 * float(l["cutoff_angle"]))
+        lights.append(l)
+    return Scene(path, render, cam, bg, materials, objects, lights, textures, meshes)
+
+
+def missing_files(path: str | Path) -> list[str]:
+    """The mesh files a scene file names that are not there (fetched meshes such as the
+    dragon and the bunny: tools/fetch_meshes.sh). Such a scene is skipped, and said so."""
+    s = load(path)
+    files = [o["file"] for o in s.objects if o["type"] == "mesh"]
+    files += [m["file"] for m in s.meshes.values()]
+    return [f for f in files if not Path(f).exists()]
+
+
+def _resolve_files(table: dict, folder: Path) -> dict:
+    """`file` keys (of a texture, a mesh, or a texture written in place at any depth)
+    made absolute: the scene is rendered from a copy written elsewhere."""
+    out = {}
+    for k, v in table.items():
+        if k == "file" and isinstance(v, str):
+            v = str((folder / v).resolve())
+        elif isinstance(v, dict):
+            v = _resolve_files(v, folder)
+        out[k] = v
+    return out
 
 
 # ---- writing ------------------------------------------------------------------------
@@ -131,6 +174,8 @@ def _value(v) -> str:
         return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
     if isinstance(v, list):
         return "[" + ", ".join(_value(x) for x in v) + "]"
+    if isinstance(v, dict):  # an inline table: a texture in place, two_sided's front
+        return "{ " + ", ".join(_table(v)) + " }"
     raise TypeError(f"cannot write {type(v).__name__} to TOML")
 
 
@@ -142,6 +187,10 @@ def to_toml(scene: Scene) -> str:
     """The scene as TOML text that our renderer reads back to the same values."""
     out = ["[render]", *_table(scene.render), "", "[camera]", *_table(scene.camera), "",
            "[background]", *_table(scene.background), ""]
+    for name, t in scene.textures.items():
+        out += [f"[textures.{_value(name)}]", *_table(t), ""]
+    for name, t in scene.meshes.items():
+        out += [f"[meshes.{_value(name)}]", *_table(t), ""]
     for name, m in scene.materials.items():
         out += [f"[materials.{_value(name)}]", *_table(m), ""]
     for o in scene.objects:
