@@ -231,6 +231,8 @@ impl Spinner {
             return Self(None);
         }
         let bar = indicatif::ProgressBar::new_spinner().with_message(message.to_string());
+        // Drawn now, not at the first tick: a write faster than a tick still says so.
+        bar.tick();
         bar.enable_steady_tick(std::time::Duration::from_millis(100));
         Self(Some(bar))
     }
