@@ -22,6 +22,7 @@
 
 mod bsdf;
 mod convert;
+mod shape;
 mod transform;
 pub mod xml;
 

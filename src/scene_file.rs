@@ -41,6 +41,7 @@ mod location;
 mod make;
 mod make_bsdf;
 mod model;
+mod objects;
 mod resolve;
 mod texture_spec;
 mod transform;
@@ -55,9 +56,9 @@ pub use build::{Built, Summary};
 pub use camera::FileCamera;
 pub use light::LightSpec;
 pub use model::{
-    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, MeshDef, ObjectSpec, RenderOptions,
-    Scale, Triple,
+    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, RenderOptions, Triple,
 };
+pub use objects::{MeshDef, ObjectSpec, Scale};
 pub use texture_spec::{ScalarRef, TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
 pub use warnings::Warning;

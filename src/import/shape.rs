@@ -1,0 +1,249 @@
+//! Mitsuba 3's `<shape>` plugins as objects: meshes (`obj`, `ply`, placed by any map),
+//! spheres, the unit `rectangle` and `cube` as triangles, and `shapegroup`s placed by
+//! `instance`s. A shape's `<bsdf>` names its material; an `area` emitter makes it emissive.
+
+use super::convert::Importer;
+use super::xml::Plugin;
+use crate::error::Result;
+use crate::scene_file::{MaterialSpec, MeshDef, ObjectSpec, TextureRef};
+use crate::transform::Affine;
+
+impl Importer {
+    pub(super) fn shape(&mut self, s: &Plugin) -> Result<()> {
+        match s.kind.as_str() {
+            "shapegroup" => return self.shapegroup(s),
+            "instance" => return self.instance(s),
+            _ => {}
+        }
+        self.read(s);
+        let bsdf = s.children.iter().find(|c| c.tag == "bsdf");
+        let area = s.children.iter().find(|c| c.tag == "emitter");
+        let material = match (area, bsdf) {
+            (Some(e), _) if e.kind != "area" => return Err(self.unsupported(e, &e.kind)),
+            (Some(e), b) => {
+                self.read(e);
+                self.lights_on_surfaces = true;
+                let albedo = match b {
+                    Some(b) if b.kind == "diffuse" => match self.texture(b, "reflectance")? {
+                        Some(TextureRef::Color(c)) => Some(c),
+                        None => Some([0.5; 3]),
+                        Some(_) => {
+                            return Err(b
+                                .at
+                                .error("an emitter's diffuse reflectance is a colour here, not a texture"));
+                        }
+                    },
+                    Some(b) => {
+                        self.warn(
+                            b,
+                            "under an area emitter it reflects nothing here (only a diffuse one does)".into(),
+                        );
+                        None
+                    }
+                    None => Some([0.5; 3]),
+                };
+                let name = format!("area_line{}", e.at.line);
+                let radiance = self.triple(e, "radiance")?.unwrap_or([1.0; 3]);
+                self.file.materials.insert(
+                    name.clone(),
+                    MaterialSpec::Emissive {
+                        radiance,
+                        two_sided: false,
+                        albedo,
+                    },
+                );
+                name
+            }
+            (None, Some(b)) => self.named_material(b)?,
+            (None, None) => {
+                let name = "default_diffuse".to_string();
+                self.file
+                    .materials
+                    .entry(name.clone())
+                    .or_insert(MaterialSpec::Lambertian {
+                        albedo: TextureRef::Color([0.5; 3]),
+                    });
+                name
+            }
+        };
+        let m = self.to_world(s)?;
+        match s.kind.as_str() {
+            "obj" | "ply" => {
+                let file = self
+                    .text(s, "filename")?
+                    .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
+                self.file.objects.push(ObjectSpec::Mesh {
+                    file: self.path_of(&file),
+                    scale: Default::default(),
+                    rotate: [0.0; 3],
+                    translate: [0.0; 3],
+                    material,
+                    face_normals: self.boolean(s, "face_normals")?.unwrap_or(false),
+                    flip_tex_coords: self.boolean(s, "flip_tex_coords")?,
+                    matrix: (m != Affine::IDENTITY).then(|| m.rows()),
+                });
+            }
+            "sphere" => {
+                let c = self.triple(s, "center")?.unwrap_or([0.0; 3]);
+                let radius = self.number(s, "radius")?.unwrap_or(1.0);
+                let scale = uniform_scale(&m).ok_or_else(|| {
+                    s.at.error("sphere: `to_world` may only scale uniformly, turn and move it")
+                })?;
+                self.file.objects.push(ObjectSpec::Sphere {
+                    center: m.point(c),
+                    radius: radius * scale,
+                    material,
+                });
+            }
+            "rectangle" | "cube" => {
+                let corners: &[[[f64; 3]; 3]] = if s.kind == "rectangle" { &RECTANGLE } else { &CUBE };
+                for [a, b, c] in corners {
+                    let (a, b, c) = (m.point(*a), m.point(*b), m.point(*c));
+                    self.file.objects.push(ObjectSpec::Triangle {
+                        a,
+                        b,
+                        c,
+                        material: material.clone(),
+                    });
+                }
+            }
+            other => return Err(self.unsupported(s, other)),
+        }
+        Ok(())
+    }
+}
+
+impl Importer {
+    /// A `shapegroup` of `obj` and `ply` shapes: each a `[meshes]` entry, placed only by
+    /// the `instance`s that name the group.
+    fn shapegroup(&mut self, g: &Plugin) -> Result<()> {
+        self.read(g);
+        let id =
+            g.id.clone()
+                .ok_or_else(|| g.at.error("a <shape type=\"shapegroup\"> needs an `id`"))?;
+        let mut parts = Vec::new();
+        for (k, s) in g.children.iter().enumerate() {
+            self.read(s);
+            if s.tag != "shape" || !matches!(s.kind.as_str(), "obj" | "ply") {
+                return Err(s.at.error(format!(
+                    "{}: a shapegroup here holds obj and ply shapes only",
+                    s.label()
+                )));
+            }
+            if s.children.iter().any(|c| c.tag == "emitter") {
+                return Err(s
+                    .at
+                    .error("an instanced shape is not sampled as a light here: no emitter on it"));
+            }
+            let material = match s.children.iter().find(|c| c.tag == "bsdf") {
+                Some(b) => self.named_material(b)?,
+                None => self.default_material(),
+            };
+            let file = self
+                .text(s, "filename")?
+                .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
+            let name = format!("{id}_{k}");
+            self.file.meshes.insert(
+                name.clone(),
+                MeshDef {
+                    file: self.path_of(&file),
+                },
+            );
+            parts.push((name, self.to_world(s)?, material));
+        }
+        self.groups.insert(id, parts);
+        Ok(())
+    }
+
+    /// An `instance` of a `shapegroup`: each of its meshes placed by its own map, then the
+    /// instance's. (An instance shades with its faces' normals: see the scene format.)
+    fn instance(&mut self, i: &Plugin) -> Result<()> {
+        self.read(i);
+        let Some(group) = i
+            .children
+            .iter()
+            .find(|c| c.kind == "shapegroup")
+            .and_then(|g| g.id.as_ref())
+        else {
+            return Err(i
+                .at
+                .error("an <shape type=\"instance\"> names its shapegroup by a <ref>"));
+        };
+        let parts = self
+            .groups
+            .get(group)
+            .cloned()
+            .ok_or_else(|| i.at.error(format!("no shapegroup `{group}`")))?;
+        let to_world = self.to_world(i)?;
+        for (mesh, own, material) in parts {
+            self.file.objects.push(ObjectSpec::Instance {
+                mesh,
+                scale: Default::default(),
+                rotate: [0.0; 3],
+                translate: [0.0; 3],
+                matrix: Some(own.then(&to_world).rows()),
+                material,
+            });
+        }
+        Ok(())
+    }
+
+    fn default_material(&mut self) -> String {
+        let name = "default_diffuse".to_string();
+        self.file
+            .materials
+            .entry(name.clone())
+            .or_insert(MaterialSpec::Lambertian {
+                albedo: TextureRef::Color([0.5; 3]),
+            });
+        name
+    }
+}
+
+/// Mitsuba's `rectangle`: `[−1, 1]²` at `z = 0`, facing `+z`.
+const RECTANGLE: [[[f64; 3]; 3]; 2] = [
+    [[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0]],
+    [[-1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0]],
+];
+
+/// Mitsuba's `cube`: `[−1, 1]³`, every face wound outward.
+const CUBE: [[[f64; 3]; 3]; 12] = {
+    const fn face(axis: usize, sign: f64) -> [[[f64; 3]; 3]; 2] {
+        // The two other axes, in the order that makes (u × v) point along +axis.
+        let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+        let mut q = [[0.0; 3]; 4];
+        let corners = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
+        let mut k = 0;
+        while k < 4 {
+            q[k][axis] = sign;
+            q[k][u] = corners[k].0 * sign;
+            q[k][v] = corners[k].1;
+            k += 1;
+        }
+        [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]
+    }
+    let mut all = [[[0.0; 3]; 3]; 12];
+    let mut f = 0;
+    while f < 6 {
+        let two = face(f / 2, if f % 2 == 0 { 1.0 } else { -1.0 });
+        all[2 * f] = two[0];
+        all[2 * f + 1] = two[1];
+        f += 1;
+    }
+    all
+};
+
+/// The factor of a map that scales uniformly (then turns and moves), if it does.
+pub(super) fn uniform_scale(m: &Affine) -> Option<f64> {
+    let r = m.rows();
+    let col = |j: usize| (r[0][j] * r[0][j] + r[1][j] * r[1][j] + r[2][j] * r[2][j]).sqrt();
+    let s = col(0);
+    let dot = |i: usize, j: usize| r[0][i] * r[0][j] + r[1][i] * r[1][j] + r[2][i] * r[2][j];
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * s.max(1.0);
+    (close(col(1), s)
+        && close(col(2), s)
+        && close(dot(0, 1), 0.0)
+        && close(dot(1, 2), 0.0)
+        && close(dot(0, 2), 0.0))
+    .then_some(s)
+}
