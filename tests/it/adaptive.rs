@@ -206,22 +206,20 @@ fn a_time_budget_gives_the_noisiest_pixels_the_most_samples() {
     let scene = scene();
     let camera = camera();
     let budget = Duration::from_millis(400);
+    // A cap no machine reaches in the budget: with the default cap a fast machine gave
+    // every pixel 4096 samples, and the test could not tell noisy from calm.
     let render = Renderer::new(&scene, &camera)
         .max_depth(6)
         .seed(1)
         .time_budget(budget)
+        .max_spp(1 << 30)
         .render()
         .unwrap();
     let c = maps(&render);
     assert!(c.samples().iter().all(|&n| n >= Adaptive::DEFAULT_MIN_SPP));
     assert!(c.rounds() > 1, "{} rounds", c.rounds());
-    // Every pixel may have met the cap first; otherwise the time was spent.
-    let capped = c.samples().iter().all(|&n| n == Adaptive::DEFAULT_MAX_SPP);
-    assert!(
-        capped || render.stats.elapsed >= budget,
-        "{:?}",
-        render.stats.elapsed
-    );
+    assert!(c.samples().iter().all(|&n| n < 1 << 30));
+    assert!(render.stats.elapsed >= budget, "{:?}", render.stats.elapsed);
     // The pixels with the largest deviation per sample took more samples than those with
     // the smallest: the deviation is the error times √n without the pseudo-sample's 1/n².
     let mut by_deviation: Vec<(f64, u32)> = c
