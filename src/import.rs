@@ -22,6 +22,9 @@
 
 mod bsdf;
 mod convert;
+mod exact;
+mod extension;
+mod sensor;
 mod shape;
 mod transform;
 pub mod xml;
@@ -40,8 +43,10 @@ use std::path::Path;
 /// [`Error::SceneFile`](crate::Error::SceneFile) naming the file and line of malformed XML,
 /// a plugin or a parameter this importer does not read, or a value of the wrong type.
 pub fn mitsuba(path: &Path, defines: &BTreeMap<String, String>) -> Result<Imported> {
-    let (plugins, folders) = xml::read(path, defines)?;
-    convert::Importer::new(SceneFile::empty(path), folders).run(&plugins)
+    let document = xml::read(path, defines)?;
+    let mut importer = convert::Importer::new(SceneFile::empty(path), document.folders);
+    importer.render_defaults(&document.defines, path)?;
+    importer.run(&document.plugins)
 }
 
 /// Whether `path` names a Mitsuba XML scene (by its extension, `.xml`).

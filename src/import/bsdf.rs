@@ -5,7 +5,7 @@ use super::convert::Importer;
 use super::xml::{Plugin, Value};
 use crate::error::Result;
 use crate::scene_file::{
-    ConductorSpec, DistributionSpec, FresnelSpec, IorSpec, MaterialSpec, PlasticSpec, RoughConductorSpec,
+    ConductorSpec, DistributionSpec, IorSpec, MaterialSpec, PlasticSpec, RoughConductorSpec,
     RoughDielectricSpec, RoughPlasticSpec, ScalarRef, TextureRef, TextureSpec, ThinDielectricSpec,
     TwoSidedSpec, UvScale, WrapSpec,
 };
@@ -86,7 +86,7 @@ impl Importer {
                 MaterialSpec::Dielectric {
                     index: int / ext,
                     albedo: r.or(t),
-                    fresnel: FresnelSpec::Exact,
+                    fresnel: self.fresnel(b)?,
                 }
             }
             "roughdielectric" => MaterialSpec::RoughDielectric(RoughDielectricSpec {
@@ -147,6 +147,7 @@ impl Importer {
                 let material = self.named_material(inner)?;
                 MaterialSpec::NormalMap { normal_map, material }
             }
+            "raytrace_mirror" => self.mirror(b)?,
             other => return Err(self.unsupported(b, other)),
         })
     }
@@ -165,9 +166,23 @@ impl Importer {
         Ok(self.triple(p, name)?.map(TextureRef::Color))
     }
 
-    /// The number parameter `name` of `p` that may be a texture (a roughness).
+    /// The number parameter `name` of `p` that may be a texture (a roughness). Mitsuba
+    /// looks a `checkerboard` up as a number with its colours swapped (`color1` where as
+    /// a colour it is `color0`) and each colour's channels averaged; the scene file reads
+    /// a colour's first channel, so the colours are swapped and made grey here.
     fn scalar(&mut self, p: &Plugin, name: &str) -> Result<Option<ScalarRef>> {
-        Ok(self.texture(p, name)?.map(ScalarRef))
+        let mut texture = self.texture(p, name)?;
+        if let Some(TextureRef::Inline(spec)) = &mut texture
+            && let TextureSpec::Checkerboard { color0, color1, .. } = spec.as_mut()
+        {
+            // A grey colour stays as written ((x + x + x)/3 need not round back to x).
+            let grey = |c: [f64; 3]| match c {
+                [r, g, b] if r == g && g == b => c,
+                [r, g, b] => [(r + g + b) / 3.0; 3],
+            };
+            (*color0, *color1) = (grey(*color1), grey(*color0));
+        }
+        Ok(texture.map(ScalarRef))
     }
 
     /// A `<texture>` plugin: `bitmap` or `checkerboard`.
@@ -201,7 +216,8 @@ impl Importer {
                 TextureSpec::Image {
                     file: self.path_of(&file),
                     wrap,
-                    raw: self.boolean(t, "raw")?,
+                    // Mitsuba decodes sRGB unless told `raw`, a normal map's image too.
+                    raw: Some(self.boolean(t, "raw")?.unwrap_or(false)),
                     scale,
                     offset,
                 }
@@ -215,10 +231,10 @@ impl Importer {
         let Some(p) = t.properties.get("to_uv") else {
             return Ok((UvScale::Uniform(1.0), [0.0; 2]));
         };
-        let Value::Transform(map) = &p.value else {
+        let Value::Transform(t) = &p.value else {
             return Err(p.at.error("`to_uv` is a <transform>"));
         };
-        let r = map.rows();
+        let r = t.map.rows();
         if r[0][1] != 0.0 || r[1][0] != 0.0 {
             return Err(p
                 .at

@@ -6,7 +6,7 @@
 use super::xml::{Plugin, Value};
 use crate::error::{Error, Result};
 
-use crate::scene_file::{BackgroundSpec, CameraSpec, LightSpec, SceneFile};
+use crate::scene_file::{BackgroundSpec, LightSpec, SceneFile};
 use crate::transform::Affine;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -113,13 +113,13 @@ impl Importer {
         ))
     }
 
-    /// A file name as the scene file keeps it: found in the XML's folder or a `<path>`.
+    /// A file name as the scene file keeps it, relative to the XML's folder (as a scene
+    /// file's are to its own): found there or in a `<path>`.
     pub(super) fn path_of(&self, name: &str) -> String {
         let found = self.folders.iter().map(|f| f.join(name)).find(|p| p.exists());
-        found
-            .unwrap_or_else(|| self.folders[0].join(name))
-            .to_string_lossy()
-            .into_owned()
+        let path = found.unwrap_or_else(|| self.folders[0].join(name));
+        let relative = path.strip_prefix(&self.folders[0]).unwrap_or(&path);
+        relative.to_string_lossy().into_owned()
     }
 
     fn property<'p>(&self, p: &'p Plugin, name: &str) -> Option<&'p super::xml::Property> {
@@ -163,7 +163,7 @@ impl Importer {
     pub(super) fn to_world(&self, p: &Plugin) -> Result<Affine> {
         match self.property(p, "to_world").map(|q| (&q.value, &q.at)) {
             None => Ok(Affine::IDENTITY),
-            Some((Value::Transform(m), _)) => Ok(*m),
+            Some((Value::Transform(t), _)) => Ok(t.map),
             Some((_, at)) => Err(at.error(format!("{}: `to_world` is a <transform>", p.label()))),
         }
     }
@@ -178,83 +178,6 @@ impl Importer {
             self.file.materials.insert(name.clone(), spec);
         }
         Ok(name)
-    }
-
-    fn sensor(&mut self, s: &Plugin) -> Result<()> {
-        self.read(s);
-        if s.kind != "perspective" && s.kind != "thinlens" {
-            return Err(self.unsupported(s, &s.kind));
-        }
-        let (mut width, mut height) = (768.0, 576.0);
-        for c in &s.children {
-            self.read(c);
-            match (c.tag.as_str(), c.kind.as_str()) {
-                ("film", "hdrfilm") => {
-                    width = self.number(c, "width")?.unwrap_or(width);
-                    height = self.number(c, "height")?.unwrap_or(height);
-                    for f in c
-                        .children
-                        .iter()
-                        .filter(|f| f.tag == "rfilter" && f.kind != "box")
-                    {
-                        self.warn(
-                            f,
-                            "rendered with a box filter (each sample counts for its own pixel)".into(),
-                        );
-                    }
-                }
-                ("sampler", kind) => {
-                    if kind != "independent" {
-                        self.warn(c, "rendered with independent uniform samples".into());
-                    }
-                    self.file.render.spp = self.number(c, "sample_count")?.unwrap_or(4.0) as u32;
-                }
-                _ => return Err(self.unsupported(c, &c.kind)),
-            }
-        }
-        let m = self.to_world(s)?;
-        let r = m.rows();
-        let det = r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1])
-            - r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0])
-            + r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
-        if det <= 0.0 {
-            return Err(s.at.error(format!(
-                "{}: a mirrored camera (to_world with a negative determinant) is not supported",
-                s.label()
-            )));
-        }
-        let aspect = width / height;
-        let fov = self.number(s, "fov")?.unwrap_or(30.0);
-        let t = (fov.to_radians() / 2.0).tan();
-        let vertical = match self.text(s, "fov_axis")?.as_deref().unwrap_or("x") {
-            "x" => t / aspect,
-            "y" => t,
-            "diagonal" => t / (1.0 + aspect * aspect).sqrt(),
-            "smaller" if aspect >= 1.0 => t,
-            "smaller" => t / aspect,
-            "larger" if aspect >= 1.0 => t / aspect,
-            "larger" => t,
-            other => return Err(s.at.error(format!("{}: no fov_axis `{other}`", s.label()))),
-        };
-        let (aperture, focus_distance) = if s.kind == "thinlens" {
-            (
-                self.number(s, "aperture_radius")?.unwrap_or(0.03),
-                self.number(s, "focus_distance")?,
-            )
-        } else {
-            (0.0, None)
-        };
-        self.file.render.width = width as usize;
-        self.file.camera = CameraSpec::LookAt {
-            from: m.point([0.0; 3]),
-            at: m.point([0.0, 0.0, 1.0]),
-            up: m.vector([0.0, 1.0, 0.0]),
-            vfov: 2.0 * vertical.atan().to_degrees(),
-            aspect,
-            aperture,
-            focus_distance,
-        };
-        Ok(())
     }
 
     fn emitter(&mut self, e: &Plugin) -> Result<()> {
@@ -296,14 +219,19 @@ impl Importer {
                 let file = self
                     .text(e, "filename")?
                     .ok_or_else(|| e.at.error("<emitter type=\"envmap\"> needs a `filename`"))?;
-                let rotate =
-                    euler_xyz(&m).ok_or_else(|| e.at.error("envmap: `to_world` may only turn the map"))?;
+                // Turns about x, y, z as written keep their angles; another map is solved for them.
+                let rotate = match super::exact::turns(self.steps(e)) {
+                    Some(turns) => turns,
+                    None => euler_xyz(&m)
+                        .ok_or_else(|| e.at.error("envmap: `to_world` may only turn the map"))?,
+                };
                 self.file.background = BackgroundSpec::Envmap {
                     file: self.path_of(&file),
                     scale: self.number(e, "scale")?.unwrap_or(1.0),
                     rotate,
                 };
             }
+            "raytrace_sky" => self.sky(e)?,
             other => return Err(self.unsupported(e, other)),
         }
         Ok(())

@@ -72,15 +72,16 @@ impl Importer {
                 let file = self
                     .text(s, "filename")?
                     .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
+                let placed = self.placed(s)?;
                 self.file.objects.push(ObjectSpec::Mesh {
                     file: self.path_of(&file),
-                    scale: Default::default(),
-                    rotate: [0.0; 3],
-                    translate: [0.0; 3],
+                    scale: placed.scale,
+                    rotate: placed.rotate,
+                    translate: placed.translate,
                     material,
                     face_normals: self.boolean(s, "face_normals")?.unwrap_or(false),
                     flip_tex_coords: self.boolean(s, "flip_tex_coords")?,
-                    matrix: (m != Affine::IDENTITY).then(|| m.rows()),
+                    matrix: placed.matrix,
                 });
             }
             "sphere" => {
@@ -107,6 +108,7 @@ impl Importer {
                     });
                 }
             }
+            "raytrace_plane" | "raytrace_triangle" => self.flat_shape(s, material)?,
             other => return Err(self.unsupported(s, other)),
         }
         Ok(())

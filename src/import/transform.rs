@@ -1,18 +1,45 @@
 //! Mitsuba 3's `<transform>`: its steps (`translate`, `rotate`, `scale`, `matrix`,
-//! `lookat`), each applied after the ones before it, as one [`Affine`].
+//! `lookat`), each applied after the ones before it, as one [`Affine`], with the steps
+//! kept as written (a placement the scene file can say in its own words renders the
+//! same bytes as the scene file: see `exact.rs`).
 
 use super::xml::At;
 use crate::error::Result;
 use crate::transform::Affine;
 
-/// The map of the `<transform>` element `node`: `Mₙ·…·M₁` for its steps `M₁ … Mₙ` in
-/// document order. Attribute values pass through `substitute` (`$name`).
+/// A `<transform>`: its map and the steps it was written as.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Transform {
+    /// `Mₙ·…·M₁` for the steps `M₁ … Mₙ`.
+    pub map: Affine,
+    /// The steps in document order.
+    pub steps: Vec<Step>,
+}
+
+/// One step of a `<transform>`, its numbers as written.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Step {
+    /// `<translate>`.
+    Translate([f64; 3]),
+    /// `<scale>`, a factor per axis.
+    Scale([f64; 3]),
+    /// `<rotate>`: the axis, the angle in degrees.
+    Rotate([f64; 3], f64),
+    /// `<matrix>`.
+    Matrix(Affine),
+    /// `<lookat>`: origin, target, up.
+    LookAt([[f64; 3]; 3]),
+}
+
+/// The `<transform>` element `node`: its map `Mₙ·…·M₁` for its steps `M₁ … Mₙ` in
+/// document order, and the steps. Attribute values pass through `substitute` (`$name`).
 pub fn transform(
     node: roxmltree::Node,
     at: &At,
     substitute: &dyn Fn(&str) -> Result<String>,
-) -> Result<Affine> {
+) -> Result<Transform> {
     let mut map = Affine::IDENTITY;
+    let mut steps = Vec::new();
     for step in node.children().filter(roxmltree::Node::is_element) {
         let tag = step.tag_name().name();
         let attribute = |name: &str| step.attribute(name).map(substitute).transpose();
@@ -50,9 +77,15 @@ pub fn transform(
             };
             Ok([one("x")?, one("y")?, one("z")?])
         };
-        let next = match tag {
-            "translate" => Affine::translate(xyz(0.0)?),
-            "scale" => Affine::scale(xyz(1.0)?),
+        let (next, step) = match tag {
+            "translate" => {
+                let t = xyz(0.0)?;
+                (Affine::translate(t), Step::Translate(t))
+            }
+            "scale" => {
+                let s = xyz(1.0)?;
+                (Affine::scale(s), Step::Scale(s))
+            }
             "rotate" => {
                 let angle = numbers("angle")?
                     .and_then(|v| v.first().copied())
@@ -61,7 +94,7 @@ pub fn transform(
                 if axis == [0.0; 3] || !axis.iter().all(|a| a.is_finite()) {
                     return Err(at.error("<rotate> needs a finite, non-zero axis"));
                 }
-                Affine::rotate(axis, angle)
+                (Affine::rotate(axis, angle), Step::Rotate(axis, angle))
             }
             "matrix" => {
                 let v = numbers("value")?.unwrap_or_default();
@@ -78,7 +111,8 @@ pub fn transform(
                 } else {
                     [0, 1, 2].map(|i| [v[3 * i], v[3 * i + 1], v[3 * i + 2], 0.0])
                 };
-                Affine::from_rows(rows).map_err(|e| at.error(format!("<matrix>: {e}")))?
+                let m = Affine::from_rows(rows).map_err(|e| at.error(format!("<matrix>: {e}")))?;
+                (m, Step::Matrix(m))
             }
             "lookat" => {
                 let up = if step.attribute("up").is_some() {
@@ -86,13 +120,16 @@ pub fn transform(
                 } else {
                     [0.0, 1.0, 0.0]
                 };
-                Affine::look_at(triple("origin")?, triple("target")?, up).ok_or_else(|| {
+                let (origin, target) = (triple("origin")?, triple("target")?);
+                let m = Affine::look_at(origin, target, up).ok_or_else(|| {
                     at.error("<lookat>: the origin is the target, or `up` is along the view")
-                })?
+                })?;
+                (m, Step::LookAt([origin, target, up]))
             }
             other => return Err(at.error(format!("<{other}> is not a step of a <transform>"))),
         };
         map = map.then(&next);
+        steps.push(step);
     }
-    Ok(map)
+    Ok(Transform { map, steps })
 }

@@ -4,8 +4,8 @@
 //! business.
 
 use super::transform::transform;
+pub use super::transform::{Step, Transform};
 use crate::error::{Error, Result};
-use crate::transform::Affine;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -48,7 +48,7 @@ pub enum Value {
     /// `<rgb>`, `<point>`, `<vector>`, and a `<spectrum>` of one value (grey).
     Triple([f64; 3]),
     /// `<transform>`.
-    Transform(Affine),
+    Transform(Transform),
 }
 
 /// A property: its value and where it is written.
@@ -86,15 +86,26 @@ impl Plugin {
     }
 }
 
+/// A scene file as read: its plugins, where its file names are looked for, its `$name`s.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Document {
+    /// The top-level plugins, in order (those of an include where it is included).
+    pub plugins: Vec<Plugin>,
+    /// The scene's folder, then each `<path>` folder.
+    pub folders: Vec<PathBuf>,
+    /// Every `$name`'s value: `-D`'s, else the last `<default>`'s.
+    pub defines: BTreeMap<String, String>,
+}
+
 /// The scene file at `path` as the list of its top-level plugins (and the folders file
-/// names are looked for in), with `defines`
-/// (`-D name=value`) overriding its `<default>`s.
+/// names are looked for in, and its `$name`s' values), with `defines` (`-D name=value`)
+/// overriding its `<default>`s.
 ///
 /// # Errors
 /// [`Error::SceneFile`] naming the file and line of a malformed document, an unknown tag,
 /// a `$name` nothing defines, a `<ref>` to an unknown id, an include that cannot be read or
 /// nests too deep, or a value that is not of its tag's type.
-pub fn read(path: &Path, defines: &BTreeMap<String, String>) -> Result<(Vec<Plugin>, Vec<PathBuf>)> {
+pub fn read(path: &Path, defines: &BTreeMap<String, String>) -> Result<Document> {
     let mut reader = Reader {
         defines: defines.clone(),
         fixed: defines.keys().cloned().collect(),
@@ -103,7 +114,11 @@ pub fn read(path: &Path, defines: &BTreeMap<String, String>) -> Result<(Vec<Plug
     };
     let mut plugins = Vec::new();
     reader.file(path, 0, &mut plugins)?;
-    Ok((plugins, reader.folders))
+    Ok(Document {
+        plugins,
+        folders: reader.folders,
+        defines: reader.defines,
+    })
 }
 
 struct Reader {
