@@ -144,6 +144,13 @@ impl Importer {
                 let normal_map = self.texture(b, "normalmap")?.ok_or_else(|| {
                     b.at.error(format!("{}: needs its `normalmap` texture", b.label()))
                 })?;
+                // Mitsuba 3 shadows and flips perturbed normals unless told not to; here never.
+                let flags = ["use_shadowing_function", "flip_invalid_normals"];
+                for flag in flags {
+                    if self.boolean(b, flag)? != Some(false) {
+                        self.warn(b, format!("rendered as with `{flag}` false (Mitsuba's default is true)"));
+                    }
+                }
                 let material = self.named_material(inner)?;
                 MaterialSpec::NormalMap { normal_map, material }
             }

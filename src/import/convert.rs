@@ -85,6 +85,18 @@ impl Importer {
         } else {
             (depth as u32).saturating_sub(1)
         };
+        let lit_background = match self.file.background {
+            BackgroundSpec::Solid { light, .. } | BackgroundSpec::Sky { light, .. } => light,
+            BackgroundSpec::Envmap { .. } => true,
+        };
+        if self.lights_on_surfaces && !lit_background && !self.file.lights.is_empty() {
+            // A point-like light's shadow ray is one segment more than the bounces here.
+            self.warnings.push(
+                "point, spot and directional lights beside area emitters, with no emitter at infinity: \
+                 here they light paths of up to max_depth + 1 segments, in Mitsuba max_depth"
+                    .into(),
+            );
+        }
         Ok(Imported {
             file: self.file,
             read: self.read,
