@@ -19,11 +19,19 @@
 //! point-like lights and a non-emitting background renders with one bounce fewer, one with
 //! an area light or an environment emitter with the same number (the renderer's rule for
 //! such scenes is Mitsuba's).
+//!
+//! A transform that says what a scene file says (a mesh's scale, turns about x, y, z and
+//! translation; a sensor's lone `lookat`) is read as the scene file's keys, rounded alike;
+//! a few `raytrace_` extensions say what Mitsuba cannot (the spec's screen camera, the sky,
+//! planes, lone triangles, the mirror, Schlick's Fresnel, precision, exposure, tone curve).
+//! So every scene file has an XML twin that renders its bytes (`scenes/*.xml`; the
+//! extensions and the twins in `docs/SCENE_FORMAT.md`).
 
 mod bsdf;
 mod convert;
 mod exact;
 mod extension;
+mod shading;
 mod sensor;
 mod shape;
 mod transform;

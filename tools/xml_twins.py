@@ -194,9 +194,13 @@ class Writer:
             ext = o["file"].rsplit(".", 1)[-1].lower()
             self.open(f'<shape type="{ext}">')
             self.put(f'<string name="filename" value="{o["file"]}"/>')
-            for key in ("face_normals", "flip_tex_coords"):
-                if key in o:
-                    self.put(f'<boolean name="{key}" value="{str(o[key]).lower()}"/>')
+            # A file without normals is shaded with its faces' normals; Mitsuba's words for
+            # that are face_normals = true (it would shade it smooth).
+            flat = o.get("face_normals", False) or not has_normals(SCENES / o["file"])
+            if flat:
+                self.put('<boolean name="face_normals" value="true"/>')
+            if "flip_tex_coords" in o:
+                self.put(f'<boolean name="flip_tex_coords" value="{str(o["flip_tex_coords"]).lower()}"/>')
             self.placement(o)
         else:
             raise NoTwin(f"a `{kind}` object")
@@ -241,6 +245,23 @@ class Writer:
             raise NoTwin(f"a `{kind}` light (Mitsuba's spot is placed by a to_world, whose "
                          "direction does not round back to the file's)")
         self.close("</emitter>")
+
+
+def has_normals(path: Path) -> bool:
+    """Whether a mesh file holds vertex normals (an OBJ's vn lines, a PLY's nx)."""
+    if not path.exists():
+        raise NoTwin(f"{path} is missing (bash tools/fetch_meshes.sh): whether it has normals "
+                     "decides the twin's face_normals")
+    with open(path, "rb") as f:
+        if path.suffix.lower() == ".obj":
+            return any(line.startswith((b"vn ", b"vn\t")) for line in f)
+        for line in f:
+            words = line.split()
+            if words[:1] == [b"end_header"]:
+                return False
+            if len(words) == 3 and words[0] == b"property" and words[2] == b"nx":
+                return True
+    return False
 
 
 def lit_like_mitsuba(scene: dict) -> bool:

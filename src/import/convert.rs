@@ -128,10 +128,15 @@ impl Importer {
     /// A file name as the scene file keeps it, relative to the XML's folder (as a scene
     /// file's are to its own): found there or in a `<path>`.
     pub(super) fn path_of(&self, name: &str) -> String {
-        let found = self.folders.iter().map(|f| f.join(name)).find(|p| p.exists());
-        let path = found.unwrap_or_else(|| self.folders[0].join(name));
+        let path = self.located(name);
         let relative = path.strip_prefix(&self.folders[0]).unwrap_or(&path);
         relative.to_string_lossy().into_owned()
+    }
+
+    /// Where the file `name` is: in the XML's folder or a `<path>` (else where it would be).
+    pub(super) fn located(&self, name: &str) -> PathBuf {
+        let found = self.folders.iter().map(|f| f.join(name)).find(|p| p.exists());
+        found.unwrap_or_else(|| self.folders[0].join(name))
     }
 
     fn property<'p>(&self, p: &'p Plugin, name: &str) -> Option<&'p super::xml::Property> {

@@ -73,6 +73,7 @@ impl Importer {
                     .text(s, "filename")?
                     .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
                 let placed = self.placed(s)?;
+                self.shading_normals(s, &file, false)?;
                 self.file.objects.push(ObjectSpec::Mesh {
                     file: self.path_of(&file),
                     scale: placed.scale,
@@ -97,6 +98,7 @@ impl Importer {
                 });
             }
             "rectangle" | "cube" => {
+                self.unit_shape_uv(s, &material);
                 let corners: &[[[f64; 3]; 3]] = if s.kind == "rectangle" { &RECTANGLE } else { &CUBE };
                 for [a, b, c] in corners {
                     let (a, b, c) = (m.point(*a), m.point(*b), m.point(*c));
@@ -144,6 +146,7 @@ impl Importer {
             let file = self
                 .text(s, "filename")?
                 .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
+            self.shading_normals(s, &file, true)?;
             let name = format!("{id}_{k}");
             self.file.meshes.insert(
                 name.clone(),

@@ -269,3 +269,31 @@ fn a_scene_given_by_a_relative_path_finds_its_files() {
     assert!(o.status.success() && text.contains("valid"), "{text}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Mitsuba 3.9.1 shades an OBJ without normals smooth (the cross-check's crates were 30
+/// standard errors apart), an instance with its file's normals, and runs a `rectangle`'s
+/// uv over the whole face: each is a warning unless the file says what renders alike.
+#[test]
+fn shading_that_differs_from_mitsubas_is_a_warning() {
+    let warned = |body: &str, words: &str| {
+        let w = import("shading", body, &[]).unwrap().warnings;
+        w.iter().any(|w| w.contains(words))
+    };
+    let mesh = |more: &str| format!(r#"<shape type="obj"><string name="filename" value="cube.obj"/>{more}</shape>"#);
+    assert!(warned(&mesh(""), "no normals"));
+    assert!(!warned(&mesh(r#"<boolean name="face_normals" value="true"/>"#), "no normals"));
+    let group = |more: &str| {
+        format!(
+            r#"<shape type="shapegroup" id="g">{}</shape><shape type="instance"><ref id="g"/></shape>"#,
+            mesh(more)
+        )
+    };
+    assert!(warned(&group(""), "an instance"));
+    assert!(!warned(&group(r#"<boolean name="face_normals" value="true"/>"#), "an instance"));
+    let rectangle = |reflectance: &str| {
+        format!(r#"<shape type="rectangle"><bsdf type="diffuse">{reflectance}</bsdf></shape>"#)
+    };
+    let checks = r#"<texture type="checkerboard" name="reflectance"/>"#;
+    assert!(warned(&rectangle(checks), "their own uv"));
+    assert!(!warned(&rectangle(r#"<rgb name="reflectance" value="0.5"/>"#), "their own uv"));
+}

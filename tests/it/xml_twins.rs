@@ -5,9 +5,9 @@
 //! fails the test unless [`NO_TWIN`] names it with its reason.
 //!
 //! The twins are written by `tools/xml_twins.py`. The meshes `tools/fetch_meshes.sh`
-//! fetches (git-ignored, absent in CI) are replaced, for both files alike, by small stand-ins:
-//! what is compared is what the two files say (placements, materials, camera, lights,
-//! settings), not the mesh.
+//! fetches (git-ignored, absent in CI) are replaced, for both files alike, by small stand-ins
+//! of the same kind (positions and faces): what is compared is what the two files say
+//! (placements, materials, camera, lights, settings), not the mesh.
 
 use raytrace::scene_file::SceneFile;
 use std::fs;
@@ -65,13 +65,10 @@ fn mirror(name: &str, xml: &str) -> PathBuf {
     dir
 }
 
-/// A small mesh at `path`, of its format: a ball with uv and normals (OBJ), an octahedron
-/// with normals (PLY).
+/// A small mesh at `path`, of its format (OBJ or PLY): an octahedron a fifth of a unit
+/// across, above `y = 0`, of positions and faces only, as the fetched meshes are (so a twin
+/// says `face_normals = true` for it, as for them).
 fn stand_in(path: &Path) {
-    if path.extension().is_some_and(|e| e == "obj") {
-        fs::copy(root().join("validate/scenes/assets/ball.obj"), path).unwrap();
-        return;
-    }
     let corners = [
         [1, 0, 0],
         [-1, 0, 0],
@@ -79,7 +76,9 @@ fn stand_in(path: &Path) {
         [0, -1, 0],
         [0, 0, 1],
         [0, 0, -1],
-    ];
+    ]
+    .map(|c: [i32; 3]| c.map(|x| 0.1 * f64::from(x)))
+    .map(|[x, y, z]| [x, y + 0.1, z]);
     let faces = [
         [0, 2, 4],
         [2, 1, 4],
@@ -90,20 +89,16 @@ fn stand_in(path: &Path) {
         [3, 1, 5],
         [0, 3, 5],
     ];
-    let mut ply = String::from(
-        "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n\
-         property float z\nproperty float nx\nproperty float ny\nproperty float nz\n\
-         element face 8\nproperty list uchar int vertex_indices\nend_header\n",
-    );
-    for [x, y, z] in corners {
-        // A corner of the unit octahedron is its own normal; shrunk to a tenth, above y = 0.
-        let s = 0.1;
-        ply += &format!("{} {} {} {x} {y} {z}\n", s * f64::from(x), s * f64::from(y) + s, s * f64::from(z));
-    }
-    for [a, b, c] in faces {
-        ply += &format!("3 {a} {b} {c}\n");
-    }
-    fs::write(path, ply).unwrap();
+    let text = if path.extension().is_some_and(|e| e == "obj") {
+        let v = corners.map(|[x, y, z]| format!("v {x} {y} {z}\n")).concat();
+        v + &faces.map(|[a, b, c]| format!("f {} {} {}\n", a + 1, b + 1, c + 1)).concat()
+    } else {
+        let head = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n\
+                    property float z\nelement face 8\nproperty list uchar int vertex_indices\nend_header\n";
+        let v = corners.map(|[x, y, z]| format!("{x} {y} {z}\n")).concat();
+        head.to_owned() + &v + &faces.map(|[a, b, c]| format!("3 {a} {b} {c}\n")).concat()
+    };
+    fs::write(path, text).unwrap();
 }
 
 /// The bytes the binary writes for `scene` in `format` (`pfm`, `ppm`), with [`FLAGS`] and
@@ -172,4 +167,26 @@ fn a_twin_with_the_scene_files_depth_renders_other_bytes() {
     // And with the depth set right on the command line, the bytes are the same again.
     assert!(render(&toml, "ppm", &[]) == render(&xml, "ppm", &["--max-depth", "10"]));
     fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The scene format's page shows `point_lights` in both forms as the files are, so the
+/// example cannot drift from what the test above proves; the README's excerpt of the
+/// Cornell box is in its twin.
+#[test]
+fn the_docs_show_a_scene_file_and_its_twin_as_they_are() {
+    let docs = fs::read_to_string(root().join("docs/SCENE_FORMAT.md")).unwrap();
+    for file in ["point_lights.toml", "point_lights.xml"] {
+        let text = fs::read_to_string(root().join("scenes").join(file)).unwrap();
+        assert!(docs.contains(&text), "docs/SCENE_FORMAT.md does not show scenes/{file} as it is");
+    }
+    let readme = fs::read_to_string(root().join("README.md")).unwrap();
+    let twin = fs::read_to_string(root().join("scenes/cornell_box.xml")).unwrap();
+    let excerpt = readme
+        .split("```xml\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .unwrap();
+    for line in excerpt.lines() {
+        assert!(twin.contains(line.trim()), "README's XML line `{line}` is not in the twin");
+    }
 }
