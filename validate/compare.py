@@ -1,9 +1,10 @@
 """The cross-check against Mitsuba 3: every scene, both precisions, the power checks and the
 analytic checks, into a table. Run through validate/run.sh (which sets up Mitsuba first).
 
-    python validate/compare.py --quick            # CI: 64 px wide, 256 spp, nine scenes
+    python validate/compare.py --quick            # CI: 64 px wide, 256 spp, nine scenes; 3 XML files
     python validate/compare.py                    # full: every scene, 128 px, 1024 spp
     python validate/compare.py my_scene.toml ...  # those scenes (with the mode's settings)
+    python validate/compare.py scene.xml ...      # an XML file in both renderers, as it is
 
 Exit status 0 only if every comparison passes, both analytic checks pass, and every
 injected mistake is rejected. Statistics: stats.py; what is converted how: convert.py.
@@ -26,6 +27,7 @@ import renders  # noqa: E402
 import report  # noqa: E402
 import scene_model  # noqa: E402
 import stats  # noqa: E402
+import xml_check  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
@@ -165,7 +167,7 @@ def feature_power_checks(check, ours_f64, refs, mode="full"):
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("scenes", nargs="*", help="scene files (default: the mode's)")
-    ap.add_argument("--quick", action="store_true", help="CI mode: small, nine scenes")
+    ap.add_argument("--quick", action="store_true", help="CI mode: small, nine scenes and the XML files")
     ap.add_argument("--out", type=Path, help="results folder (default: validate/work/<mode>"
                     " for quick, validate/results for full)")
     ap.add_argument("--work", type=Path, default=HERE / "work", help="render cache")
@@ -175,8 +177,9 @@ def main() -> int:
     cfg = MODES[mode]
     out = args.out or (HERE / "work" / "quick" if args.quick else HERE / "results")
     work = args.work / mode
-    paths = [Path(p).resolve() for p in args.scenes] or (
-        [ROOT / p for p in cfg["scenes"]] if cfg["scenes"] else all_scenes())
+    given = [Path(p).resolve() for p in args.scenes]
+    paths = [p for p in given if p.suffix != ".xml"] or (
+        [] if given else [ROOT / p for p in cfg["scenes"]] if cfg["scenes"] else all_scenes())
     start = time.perf_counter()
     rows, pngs, refs = [], [], {}
     for p in paths:
@@ -187,6 +190,12 @@ def main() -> int:
     if not args.no_power and not args.scenes:
         print("== power checks", flush=True)
         power_checks(work, cfg["width"], cfg["spp"], refs, rows, pngs, mode)
+    # The same XML file in both renderers: the mode's scenes, or the files given.
+    for p in (p for p in given if p.suffix == ".xml"):
+        print(f"== {p.name}", flush=True)
+        xml_check.compare(p, {}, work, rows, pngs, renders.TIMES)
+    if not args.scenes:
+        xml_check.run(mode, work, rows, pngs, renders.TIMES, power=not args.no_power)
     print("== analytic checks", flush=True)
     furnace = analytic.furnace(work, 64, 64)
     probe = analytic.fresnel_probe(work)

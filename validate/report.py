@@ -26,15 +26,22 @@ def _rgb(v) -> str:
 
 
 def row(kind, scene: Scene, precision, injection, width, shape, spp, depth, v: stats.Verdict) -> dict:
+    return row_named(kind, scene.name, convert.scene_depth(scene, depth), precision, injection,
+                     shape, spp, depth, v)
+
+
+def row_named(kind, name: str, mitsuba_depth, precision, injection, shape, spp, depth,
+              v: stats.Verdict) -> dict:
+    """A row of the table for the scene `name`, Mitsuba's max_depth given."""
     if kind == "agreement":
         verdict = "pass" if v.passed else "FAIL"
     elif kind == "power":
         verdict = "rejected" if not v.passed else "NOT REJECTED"
     else:  # informational: what the file's Schlick reflectance changes
         verdict = "differs" if not v.passed else "within noise"
-    return {"kind": kind, "scene": scene.name, "precision": precision, "injection": injection,
+    return {"kind": kind, "scene": name, "precision": precision, "injection": injection,
             "size": f"{shape[1]}x{shape[0]}", "spp": spp, "max_depth": depth,
-            "mitsuba_max_depth": convert.scene_depth(scene, depth),
+            "mitsuba_max_depth": mitsuba_depth,
             "mean_ours": _rgb(v.mean_ours), "mean_mitsuba": _rgb(v.mean_mitsuba),
             "t_r": f"{v.z_channel[0]:.2f}", "t_g": f"{v.z_channel[1]:.2f}",
             "t_b": f"{v.z_channel[2]:.2f}", "block_t_max": f"{v.block_t_max:.2f}",
@@ -101,7 +108,9 @@ def write(out: Path, mode: str, cfg: dict, rows, pngs, furnace, probe, times, el
           "(Bonferroni): at most a 0.1 % chance that a correct converter fails it. "
           "`t_r, t_g, t_b`: whole-image t per channel; `rmse_ratio`: RMSE of the difference "
           "over the RMSE noise alone would give (about 1 when they agree). "
-          "Method: validate/stats.py; conventions: validate/convert.py.", ""]
+          "Method: validate/stats.py; conventions: validate/convert.py. Scenes named "
+          "`xml/NAME` are one Mitsuba XML file (validate/xml/) read by both renderers, no "
+          "converter between: their `max_depth` is the file's, as both read it.", ""]
     if skipped:
         md += [f"Skipped, their meshes not fetched (`bash tools/fetch_meshes.sh`): "
                f"{', '.join(skipped)}.", ""]

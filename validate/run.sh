@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The cross-check against Mitsuba 3, from a fresh clone: sets up the pinned Mitsuba in a
 # git-ignored virtual environment (validate/.venv), builds the renderer, tests the
-# converter's conventions, then compares every scene (validate/compare.py).
+# converter's conventions, then compares every scene and the XML files (validate/compare.py).
 #
-#   bash validate/run.sh --quick          # CI: small images, nine scenes (~1.5 min here)
+#   bash validate/run.sh --quick          # CI: small images, nine scenes, three XML files (~2 min)
 #   bash validate/run.sh                  # full: every scene, into validate/results/
 #   bash validate/run.sh my_scene.toml    # any scene file, with the full mode's settings
+#   bash validate/run.sh scene.xml        # any Mitsuba XML file, read by both renderers
 #   bash validate/run.sh --quick my.toml  # ... or the quick mode's
 #
 # Needs python3 (3.11 or later, for tomllib) with venv and pip, and the Rust toolchain.

@@ -5,9 +5,19 @@
 - assets/env.hdr: a 128 x 64 lat-long map (flat Radiance RGBE) with colour that varies with
   azimuth (so a turn of one column, 2.8 degrees, changes what a mirror sees) and two
   bright 2 x 2 texel lamps (so it also moves shadows).
+- assets/env_soft.hdr: the same colours at 64 x 32 without the lamps, for glass under an
+  environment (validate/xml/outdoor.xml): a lamp seen only through glass, found by chance,
+  gives a pixel too heavy-tailed for two seeds' variance at a few hundred spp.
 - assets/ball.obj: a coarse UV sphere (16 x 8) with vt and vn: smooth shading differs
   visibly from its facets, and its texture coordinates are the sphere's own (u with the
   azimuth, v = 0 at the top as the OBJ file counts it from the bottom).
+- assets/panel.obj: the square of Mitsuba's `rectangle` ([-1, 1]^2 at z = 0, facing +z)
+  with texture coordinates over the whole square (u = (x + 1)/2, v = (y + 1)/2 after the
+  flip of an OBJ's v both renderers make), for a textured wall: the importer's
+  `rectangle` gives each of its two triangles its own uv.
+- assets/gem.ply: a twelve-sided bipyramid, binary little-endian PLY with vertex normals
+  (the corners' directions from the centre: shaded smooth over sharp facets) and u, v, as
+  Mitsuba's PLY loader and ours both read it (validate/xml/room.xml).
 """
 
 from pathlib import Path
@@ -29,7 +39,7 @@ def write_hdr(path: Path, img: np.ndarray) -> None:
     path.write_bytes(head + rgbe.astype(np.uint8).tobytes())
 
 
-def env_map(w: int = 128, h: int = 64) -> np.ndarray:
+def env_map(w: int = 128, h: int = 64, lamps: bool = True) -> np.ndarray:
     phi = 2 * np.pi * (np.arange(w) + 0.5) / w
     theta = np.pi * (np.arange(h) + 0.5) / h
     up = np.cos(theta)[:, None]  # +1 at the top row
@@ -38,8 +48,9 @@ def env_map(w: int = 128, h: int = 64) -> np.ndarray:
     img[..., 1] = 0.40 + 0.20 * np.cos(2 * phi + 1)[None, :] * (0.5 + 0.5 * up)
     img[..., 2] = 0.55 + 0.35 * up + 0.1 * np.sin(5 * phi)[None, :]
     img = np.maximum(img, 0.02)
-    img[20:22, 30:32] = [30.0, 26.0, 20.0]  # a warm lamp, 55 degrees up
-    img[26:28, 90:92] = [8.0, 12.0, 20.0]  # a cool one, 20 degrees up
+    if lamps:
+        img[20:22, 30:32] = [30.0, 26.0, 20.0]  # a warm lamp, 55 degrees up
+        img[26:28, 90:92] = [8.0, 12.0, 20.0]  # a cool one, 20 degrees up
     return img
 
 
@@ -62,8 +73,42 @@ def ball_obj(nu: int = 16, nv: int = 8) -> str:
     return "\n".join(lines) + "\n"
 
 
+def panel_obj() -> str:
+    return ("# the square [-1, 1]^2 at z = 0 with uv over it (make_assets.py)\n"
+            "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+            "vt 0 1\nvt 1 1\nvt 1 0\nvt 0 0\nvn 0 0 1\n"
+            "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n")
+
+
+def gem_ply(n: int = 12) -> bytes:
+    ring = [(np.cos(2 * np.pi * i / n), 0.0, -np.sin(2 * np.pi * i / n)) for i in range(n)]
+    points = np.array(ring + [(0.0, 0.8, 0.0), (0.0, -1.2, 0.0)])
+    normals = points / np.linalg.norm(points, axis=1)[:, None]
+    uv = [(i / n, 0.5) for i in range(n)] + [(0.5, 1.0), (0.5, 0.0)]
+    faces = []
+    for i in range(n):
+        for apex in (n, n + 1):
+            a, b, c = i, (i + 1) % n, apex
+            e1, e2 = points[b] - points[a], points[c] - points[a]
+            if np.dot(np.cross(e1, e2), points[a] + points[b] + points[c]) < 0:
+                a, b = b, a  # wound outward
+            faces.append((a, b, c))
+    head = (f"ply\nformat binary_little_endian 1.0\ncomment validate/scenes/make_assets.py\n"
+            f"element vertex {len(points)}\n"
+            + "".join(f"property float {k}\n" for k in ("x", "y", "z", "nx", "ny", "nz", "u", "v"))
+            + f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")
+    body = b"".join(np.array([*p, *nrm, *t], "<f4").tobytes()
+                    for p, nrm, t in zip(points, normals, uv))
+    body += b"".join(np.array([3], "u1").tobytes() + np.array(f, "<i4").tobytes() for f in faces)
+    return head.encode() + body
+
+
 if __name__ == "__main__":
     HERE.mkdir(exist_ok=True)
     write_hdr(HERE / "env.hdr", env_map())
+    write_hdr(HERE / "env_soft.hdr", env_map(64, 32, lamps=False))
     (HERE / "ball.obj").write_text(ball_obj())
-    print("wrote", HERE / "env.hdr", HERE / "ball.obj")
+    (HERE / "panel.obj").write_text(panel_obj())
+    (HERE / "gem.ply").write_bytes(gem_ply())
+    print("wrote", *(HERE / f for f in ("env.hdr", "env_soft.hdr", "ball.obj", "panel.obj",
+                                        "gem.ply")))
