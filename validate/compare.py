@@ -172,14 +172,20 @@ def main() -> int:
                     " for quick, validate/results for full)")
     ap.add_argument("--work", type=Path, default=HERE / "work", help="render cache")
     ap.add_argument("--no-power", action="store_true", help="skip the power checks")
+    ap.add_argument("--xml-only", action="store_true",
+                    help="only the XML files (validate/xml/) and the analytic checks; the full "
+                         "mode's results into validate/results/xml")
     args = ap.parse_args()
     mode = "quick" if args.quick else "full"
     cfg = MODES[mode]
     out = args.out or (HERE / "work" / "quick" if args.quick else HERE / "results")
+    if args.xml_only and not args.out:
+        out = out / "xml"
     work = args.work / mode
     given = [Path(p).resolve() for p in args.scenes]
     paths = [p for p in given if p.suffix != ".xml"] or (
-        [] if given else [ROOT / p for p in cfg["scenes"]] if cfg["scenes"] else all_scenes())
+        [] if given or args.xml_only else
+        [ROOT / p for p in cfg["scenes"]] if cfg["scenes"] else all_scenes())
     start = time.perf_counter()
     rows, pngs, refs = [], [], {}
     for p in paths:
@@ -187,7 +193,7 @@ def main() -> int:
         print(f"== {scene.name}", flush=True)
         refs[scene.name] = compare_scene(scene, work, cfg["width"], cfg["spp"], ("f32", "f64"),
                                          rows, pngs)
-    if not args.no_power and not args.scenes:
+    if not args.no_power and not args.scenes and not args.xml_only:
         print("== power checks", flush=True)
         power_checks(work, cfg["width"], cfg["spp"], refs, rows, pngs, mode)
     # The same XML file in both renderers: the mode's scenes, or the files given.
@@ -201,7 +207,8 @@ def main() -> int:
     probe = analytic.fresnel_probe(work)
     elapsed = time.perf_counter() - start
     ok = report.write(out, mode, cfg, rows, pngs, furnace, probe, renders.TIMES, elapsed,
-                      skipped=[] if args.scenes or cfg["scenes"] else skipped_scenes())
+                      skipped=[] if args.scenes or cfg["scenes"] or args.xml_only
+                      else skipped_scenes())
     print(f"{'PASS' if ok else 'FAIL'}: results in {out} ({elapsed:.0f} s)")
     return 0 if ok else 1
 

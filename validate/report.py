@@ -101,7 +101,8 @@ def write(out: Path, mode: str, cfg: dict, rows, pngs, furnace, probe, times, el
     md = [f"# Cross-check against Mitsuba {mi.__version__} ({mode} mode): "
           f"{'PASS' if ok else 'FAIL'}", "",
           f"Commit `{_commit()}`, Mitsuba `{mi.variant()}`, {platform.machine()}, "
-          f"{elapsed:.0f} s in all. Every image {cfg['width']} px wide at {cfg['spp']} spp, "
+          f"{elapsed:.0f} s in all. Every converted scene's image {cfg['width']} px wide at "
+          f"{cfg['spp']} spp (an XML file's: as its row says), "
           f"seeds {', '.join(map(str, (1, 2)))} for each renderer; blocks of "
           f"{stats.BLOCK}x{stats.BLOCK} pixels. A comparison fails when any of its "
           f"whole-image or block tests has p below {stats.ALPHA:g} / (its number of tests) "

@@ -137,4 +137,4 @@ def run(mode: str, work: Path, rows, pngs, times, power: bool = True):
         depth = _max_depth(path, defines)
         rows.append(report.row_named("power", f"xml/{name}", depth, "f64", what, o[0].shape,
                                      defines["spp"], depth, v))
-        pngs.append((f"power-xml-{name}", o, m, v))
+        pngs.append((f"power-xml-{name}-{'-'.join(wrong)}", o, m, v))
