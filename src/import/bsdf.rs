@@ -148,7 +148,10 @@ impl Importer {
                 let flags = ["use_shadowing_function", "flip_invalid_normals"];
                 for flag in flags {
                     if self.boolean(b, flag)? != Some(false) {
-                        self.warn(b, format!("rendered as with `{flag}` false (Mitsuba's default is true)"));
+                        self.warn(
+                            b,
+                            format!("rendered as with `{flag}` false (Mitsuba's default is true)"),
+                        );
                     }
                 }
                 let material = self.named_material(inner)?;

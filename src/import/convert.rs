@@ -239,8 +239,9 @@ impl Importer {
                 // Turns about x, y, z as written keep their angles; another map is solved for them.
                 let rotate = match super::exact::turns(self.steps(e)) {
                     Some(turns) => turns,
-                    None => euler_xyz(&m)
-                        .ok_or_else(|| e.at.error("envmap: `to_world` may only turn the map"))?,
+                    None => {
+                        euler_xyz(&m).ok_or_else(|| e.at.error("envmap: `to_world` may only turn the map"))?
+                    }
                 };
                 self.file.background = BackgroundSpec::Envmap {
                     file: self.path_of(&file),

@@ -43,9 +43,10 @@ impl Importer {
     /// their points as written (not by a `to_world`).
     pub(super) fn flat_shape(&mut self, s: &Plugin, material: String) -> Result<()> {
         if s.properties.contains_key("to_world") {
-            return Err(s
-                .at
-                .error(format!("{}: is placed by its points, not by a `to_world`", s.label())));
+            return Err(s.at.error(format!(
+                "{}: is placed by its points, not by a `to_world`",
+                s.label()
+            )));
         }
         let point = |me: &Self, name: &str| {
             me.triple(s, name)?

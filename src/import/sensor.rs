@@ -82,7 +82,10 @@ impl Importer {
                     .and_then(|n| n.trim().parse::<f64>().ok())
                     .filter(|f| *f > 0.0)
                     .ok_or_else(|| {
-                        s.at.error(format!("{}: focal_length `{focal}` is not like `50mm`", s.label()))
+                        s.at.error(format!(
+                            "{}: focal_length `{focal}` is not like `50mm`",
+                            s.label()
+                        ))
                     })?;
                 let fov = 2.0 * (FILM_DIAGONAL_MM / (2.0 * mm)).atan().to_degrees();
                 (fov, "diagonal".into())

@@ -70,7 +70,10 @@ fn declares_normals(path: &Path) -> Option<bool> {
         "ply" => {
             for line in lines.take(PLY_HEADER_LINES) {
                 let line = line.ok()?;
-                let words: Vec<&[u8]> = line.split(u8::is_ascii_whitespace).filter(|w| !w.is_empty()).collect();
+                let words: Vec<&[u8]> = line
+                    .split(u8::is_ascii_whitespace)
+                    .filter(|w| !w.is_empty())
+                    .collect();
                 match words[..] {
                     [b"end_header", ..] => return Some(false),
                     [b"property", _, b"nx"] => return Some(true),

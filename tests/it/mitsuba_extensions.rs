@@ -3,10 +3,10 @@
 //! read in the scene file's own keys, and the defaults and conventions in which the
 //! importer follows Mitsuba 3.9.1 (each checked against Mitsuba itself: see the comments).
 
-use raytrace::import::{self, Imported};
 use raytrace::image::ToneCurve;
+use raytrace::import::{self, Imported};
 use raytrace::scene_file::{
-    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, ObjectSpec, Scale, ScalarRef,
+    BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, ObjectSpec, ScalarRef, Scale,
     TextureRef, TextureSpec,
 };
 use std::collections::BTreeMap;
@@ -71,10 +71,18 @@ const EXTENSIONS: &str = r#"
 fn the_extensions_are_the_scene_files_own_keys() {
     let f = import("ext", EXTENSIONS, &[]).unwrap().file;
     let r = &f.render;
-    assert_eq!((r.precision, r.exposure, r.tonemap), (FilePrecision::F32, -1.5, ToneCurve::Aces));
+    assert_eq!(
+        (r.precision, r.exposure, r.tonemap),
+        (FilePrecision::F32, -1.5, ToneCurve::Aces)
+    );
     // The sky is no light: Mitsuba's depth counts one segment more than the bounces here.
     assert_eq!((r.width, r.max_depth), (64, 5));
-    assert_eq!(f.camera, CameraSpec::Screen { eye: Some([0.0, 1.0, 0.0]) });
+    assert_eq!(
+        f.camera,
+        CameraSpec::Screen {
+            eye: Some([0.0, 1.0, 0.0])
+        }
+    );
     assert_eq!(
         f.background,
         BackgroundSpec::Sky {
@@ -83,7 +91,12 @@ fn the_extensions_are_the_scene_files_own_keys() {
             light: false
         }
     );
-    assert_eq!(f.materials["m"], MaterialSpec::Mirror { albedo: [0.9, 0.8, 0.7] });
+    assert_eq!(
+        f.materials["m"],
+        MaterialSpec::Mirror {
+            albedo: [0.9, 0.8, 0.7]
+        }
+    );
     assert_eq!(
         f.materials["g"],
         MaterialSpec::Dielectric {
@@ -92,14 +105,28 @@ fn the_extensions_are_the_scene_files_own_keys() {
             fresnel: FresnelSpec::Schlick
         }
     );
-    assert!(matches!(f.objects[0], ObjectSpec::Plane { normal: [0.0, 1.0, 0.0], .. }));
-    assert!(matches!(f.objects[1], ObjectSpec::Triangle { c: [0.0, 1.0, -3.0], .. }));
+    assert!(matches!(
+        f.objects[0],
+        ObjectSpec::Plane {
+            normal: [0.0, 1.0, 0.0],
+            ..
+        }
+    ));
+    assert!(matches!(
+        f.objects[1],
+        ObjectSpec::Triangle {
+            c: [0.0, 1.0, -3.0],
+            ..
+        }
+    ));
     // -D sets them too; a sky that is a light counts depth as Mitsuba's emitters do.
     let lit = EXTENSIONS.replace(
         r#"<rgb name="zenith" value="0.1, 0.2, 0.9"/>"#,
         r#"<boolean name="light" value="true"/>"#,
     );
-    let f = import("ext-lit", &lit, &[("raytrace_precision", "auto")]).unwrap().file;
+    let f = import("ext-lit", &lit, &[("raytrace_precision", "auto")])
+        .unwrap()
+        .file;
     assert_eq!((f.render.precision, f.render.max_depth), (FilePrecision::Auto, 6));
     assert!(f.build::<f64>().is_ok());
 }
@@ -107,21 +134,49 @@ fn the_extensions_are_the_scene_files_own_keys() {
 #[test]
 fn a_bad_extension_is_an_error_naming_it() {
     let cases = [
-        ("precision", r#"value="f32""#, r#"value="f16""#, "raytrace_precision"),
-        ("tonemap", r#"value="aces""#, r#"value="filmic""#, "raytrace_tonemap"),
-        ("fresnel", r#"value="schlick""#, r#"value="fast""#, "raytrace_fresnel"),
-        ("height", r#"name="height" value="32""#, r#"name="height" value="30""#, "width × width/2"),
+        (
+            "precision",
+            r#"value="f32""#,
+            r#"value="f16""#,
+            "raytrace_precision",
+        ),
+        (
+            "tonemap",
+            r#"value="aces""#,
+            r#"value="filmic""#,
+            "raytrace_tonemap",
+        ),
+        (
+            "fresnel",
+            r#"value="schlick""#,
+            r#"value="fast""#,
+            "raytrace_fresnel",
+        ),
+        (
+            "height",
+            r#"name="height" value="32""#,
+            r#"name="height" value="30""#,
+            "width × width/2",
+        ),
         (
             "plane",
             r#"<vector name="normal" value="0, 1, 0"/>"#,
             r#"<vector name="normal" value="0, 1, 0"/><transform name="to_world"><translate x="1"/></transform>"#,
             "to_world",
         ),
-        ("triangle", r#"<point name="c" value="0, 1, -3"/>"#, "", "needs `c`"),
+        (
+            "triangle",
+            r#"<point name="c" value="0, 1, -3"/>"#,
+            "",
+            "needs `c`",
+        ),
     ];
     for (name, from, to, words) in cases {
         let message = error(name, &EXTENSIONS.replacen(from, to, 1));
-        assert!(message.contains(words) && message.contains("scene.xml"), "{name}: {message}");
+        assert!(
+            message.contains(words) && message.contains("scene.xml"),
+            "{name}: {message}"
+        );
     }
 }
 
@@ -136,7 +191,8 @@ fn placements_in_the_scene_files_order_are_read_as_its_keys() {
                </emitter>"#
         )
     };
-    let srt = r#"<scale x="0.3" y="0.61" z="0.3"/><rotate y="1" angle="18.25"/><translate x="-0.33" y="-0.4"/>"#;
+    let srt =
+        r#"<scale x="0.3" y="0.61" z="0.3"/><rotate y="1" angle="18.25"/><translate x="-0.33" y="-0.4"/>"#;
     let f = import("srt", &mesh(srt), &[]).unwrap().file;
     let ObjectSpec::Mesh {
         scale,
@@ -150,14 +206,30 @@ fn placements_in_the_scene_files_order_are_read_as_its_keys() {
     };
     assert_eq!(
         (*scale, *rotate, *translate, *matrix),
-        (Scale::PerAxis([0.3, 0.61, 0.3]), [0.0, 18.25, 0.0], [-0.33, -0.4, 0.0], None)
+        (
+            Scale::PerAxis([0.3, 0.61, 0.3]),
+            [0.0, 18.25, 0.0],
+            [-0.33, -0.4, 0.0],
+            None
+        )
     );
-    assert!(matches!(f.background, BackgroundSpec::Envmap { rotate: [10.0, 0.0, -20.0], .. }));
+    assert!(matches!(
+        f.background,
+        BackgroundSpec::Envmap {
+            rotate: [10.0, 0.0, -20.0],
+            ..
+        }
+    ));
     // Another order is the same kind of map but not these keys: its matrix is kept.
-    let f = import("trs", &mesh(r#"<translate x="1"/><scale value="2"/>"#), &[]).unwrap().file;
+    let f = import("trs", &mesh(r#"<translate x="1"/><scale value="2"/>"#), &[])
+        .unwrap()
+        .file;
     assert!(matches!(
         f.objects[0],
-        ObjectSpec::Mesh { matrix: Some([[2.0, 0.0, 0.0, 2.0], _, _]), .. }
+        ObjectSpec::Mesh {
+            matrix: Some([[2.0, 0.0, 0.0, 2.0], _, _]),
+            ..
+        }
     ));
 }
 
@@ -232,7 +304,8 @@ fn textures_and_normal_maps_follow_mitsubas_conventions() {
     assert!(matches!(**map, TextureSpec::Image { raw: Some(false), .. }));
     let w = &imported.warnings;
     assert!(
-        w.iter().any(|w| w.contains("use_shadowing_function")) && !w.iter().any(|w| w.contains("flip_invalid")),
+        w.iter().any(|w| w.contains("use_shadowing_function"))
+            && !w.iter().any(|w| w.contains("flip_invalid")),
         "{w:?}"
     );
 }
@@ -243,10 +316,16 @@ fn point_lights_beside_area_emitters_are_a_warning() {
         <shape type="sphere"><emitter type="area"/></shape>
         <emitter type="point"><point name="position" value="0, 3, 0"/></emitter>"#;
     let warnings = import("mixed", body, &[]).unwrap().warnings;
-    assert!(warnings.iter().any(|w| w.contains("max_depth + 1")), "{warnings:?}");
+    assert!(
+        warnings.iter().any(|w| w.contains("max_depth + 1")),
+        "{warnings:?}"
+    );
     let lit = format!("{body}<emitter type=\"constant\"/>");
     let warnings = import("mixed-lit", &lit, &[]).unwrap().warnings;
-    assert!(!warnings.iter().any(|w| w.contains("max_depth + 1")), "{warnings:?}");
+    assert!(
+        !warnings.iter().any(|w| w.contains("max_depth + 1")),
+        "{warnings:?}"
+    );
 }
 
 /// A scene named by a relative path finds its mesh beside it (it was looked for in its
@@ -279,9 +358,13 @@ fn shading_that_differs_from_mitsubas_is_a_warning() {
         let w = import("shading", body, &[]).unwrap().warnings;
         w.iter().any(|w| w.contains(words))
     };
-    let mesh = |more: &str| format!(r#"<shape type="obj"><string name="filename" value="cube.obj"/>{more}</shape>"#);
+    let mesh =
+        |more: &str| format!(r#"<shape type="obj"><string name="filename" value="cube.obj"/>{more}</shape>"#);
     assert!(warned(&mesh(""), "no normals"));
-    assert!(!warned(&mesh(r#"<boolean name="face_normals" value="true"/>"#), "no normals"));
+    assert!(!warned(
+        &mesh(r#"<boolean name="face_normals" value="true"/>"#),
+        "no normals"
+    ));
     let group = |more: &str| {
         format!(
             r#"<shape type="shapegroup" id="g">{}</shape><shape type="instance"><ref id="g"/></shape>"#,
@@ -289,11 +372,17 @@ fn shading_that_differs_from_mitsubas_is_a_warning() {
         )
     };
     assert!(warned(&group(""), "an instance"));
-    assert!(!warned(&group(r#"<boolean name="face_normals" value="true"/>"#), "an instance"));
+    assert!(!warned(
+        &group(r#"<boolean name="face_normals" value="true"/>"#),
+        "an instance"
+    ));
     let rectangle = |reflectance: &str| {
         format!(r#"<shape type="rectangle"><bsdf type="diffuse">{reflectance}</bsdf></shape>"#)
     };
     let checks = r#"<texture type="checkerboard" name="reflectance"/>"#;
     assert!(warned(&rectangle(checks), "their own uv"));
-    assert!(!warned(&rectangle(r#"<rgb name="reflectance" value="0.5"/>"#), "their own uv"));
+    assert!(!warned(
+        &rectangle(r#"<rgb name="reflectance" value="0.5"/>"#),
+        "their own uv"
+    ));
 }

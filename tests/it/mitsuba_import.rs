@@ -122,7 +122,10 @@ fn a_scene_lands_as_the_scene_files_own_keys() {
         panic!("{:?}", f.camera)
     };
     // A lone <lookat> keeps its origin, target and up as written.
-    assert_eq!((from, at, up, aspect), ([0.0, 1.0, 5.0], [0.0, 0.5, 0.0], [0.0, 1.0, 0.0], 2.0));
+    assert_eq!(
+        (from, at, up, aspect),
+        ([0.0, 1.0, 5.0], [0.0, 0.5, 0.0], [0.0, 1.0, 0.0], 2.0)
+    );
     // fov 40 along x, aspect 2: tan(v/2) = tan(20°)/2.
     assert!((vfov - 2.0 * (20f64.to_radians().tan() / 2.0).atan().to_degrees()).abs() < 1e-12);
     assert_eq!(
@@ -245,7 +248,6 @@ fn what_is_not_read_is_an_error_naming_the_plugin_file_and_line() {
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
-
 
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [

@@ -91,7 +91,9 @@ fn stand_in(path: &Path) {
     ];
     let text = if path.extension().is_some_and(|e| e == "obj") {
         let v = corners.map(|[x, y, z]| format!("v {x} {y} {z}\n")).concat();
-        v + &faces.map(|[a, b, c]| format!("f {} {} {}\n", a + 1, b + 1, c + 1)).concat()
+        v + &faces
+            .map(|[a, b, c]| format!("f {} {} {}\n", a + 1, b + 1, c + 1))
+            .concat()
     } else {
         let head = "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n\
                     property float z\nelement face 8\nproperty list uchar int vertex_indices\nend_header\n";
@@ -104,7 +106,10 @@ fn stand_in(path: &Path) {
 /// The bytes the binary writes for `scene` in `format` (`pfm`, `ppm`), with [`FLAGS`] and
 /// `more`.
 fn render(scene: &Path, format: &str, more: &[&str]) -> Vec<u8> {
-    let out = scene.with_extension(format!("{}.{format}", scene.extension().unwrap().to_str().unwrap()));
+    let out = scene.with_extension(format!(
+        "{}.{format}",
+        scene.extension().unwrap().to_str().unwrap()
+    ));
     let o = Command::new(BIN)
         .args(["render", scene.to_str().unwrap(), "--format", format, "--out"])
         .arg(&out)
@@ -177,7 +182,10 @@ fn the_docs_show_a_scene_file_and_its_twin_as_they_are() {
     let docs = fs::read_to_string(root().join("docs/SCENE_FORMAT.md")).unwrap();
     for file in ["point_lights.toml", "point_lights.xml"] {
         let text = fs::read_to_string(root().join("scenes").join(file)).unwrap();
-        assert!(docs.contains(&text), "docs/SCENE_FORMAT.md does not show scenes/{file} as it is");
+        assert!(
+            docs.contains(&text),
+            "docs/SCENE_FORMAT.md does not show scenes/{file} as it is"
+        );
     }
     let readme = fs::read_to_string(root().join("README.md")).unwrap();
     let twin = fs::read_to_string(root().join("scenes/cornell_box.xml")).unwrap();
@@ -187,6 +195,9 @@ fn the_docs_show_a_scene_file_and_its_twin_as_they_are() {
         .and_then(|rest| rest.split("```").next())
         .unwrap();
     for line in excerpt.lines() {
-        assert!(twin.contains(line.trim()), "README's XML line `{line}` is not in the twin");
+        assert!(
+            twin.contains(line.trim()),
+            "README's XML line `{line}` is not in the twin"
+        );
     }
 }
