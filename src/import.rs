@@ -4,7 +4,7 @@
 //!
 //! Read: `<default>` and `$name` (and `-D name=value`), `<include>`, `<path>`, `id` and
 //! `<ref>`; transforms (`lookat`, `translate`, `rotate`, `scale`, `matrix`); shapes `obj`,
-//! `ply`, `sphere`, `rectangle`, `cube`, `shapegroup` (of `obj` and `ply`) and `instance`;
+//! `ply`, `sphere`, `disk`, `rectangle`, `cube`, `shapegroup` (of `obj` and `ply`) and `instance`;
 //! every BSDF this renderer has (`diffuse`,
 //! `conductor`, `roughconductor`, `dielectric`, `roughdielectric`, `thindielectric`,
 //! `plastic`, `roughplastic`, `twosided`, `normalmap`); textures `bitmap` and
@@ -12,8 +12,7 @@
 //! sensors `perspective` and `thinlens` (`fov`, `fov_axis`); `hdrfilm`, the `independent`
 //! sampler and the `path` integrator. Anything else is an error naming the plugin, its
 //! file and line; what is rendered with a difference (another reconstruction filter, an
-//! unbounded depth) is a warning naming it. Not yet read: `disk` (an error, so nothing
-//! is silently left out).
+//! unbounded depth) is a warning naming it.
 //!
 //! Mitsuba counts path segments in `max_depth`, this renderer bounces: a scene lit only by
 //! point-like lights and a non-emitting background renders with one bounce fewer, one with

@@ -35,6 +35,7 @@ mod bsdf;
 mod build;
 mod camera;
 mod check;
+mod disk;
 mod integer;
 mod light;
 mod location;

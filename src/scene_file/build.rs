@@ -46,6 +46,8 @@ pub struct Summary {
     pub spheres: usize,
     /// Planes.
     pub planes: usize,
+    /// Disks.
+    pub disks: usize,
     /// Triangles, those of meshes included.
     pub triangles: usize,
     /// Mesh objects.
@@ -57,7 +59,7 @@ pub struct Summary {
     pub lights: usize,
     /// Objects that give off light (of an emissive material).
     pub emitters: usize,
-    /// Of those, the ones sampled as lights (spheres, triangles and meshes; not planes).
+    /// Of those, the ones sampled as lights (spheres, disks, triangles and meshes; not planes).
     pub sampled_emitters: usize,
     /// Mesh faces left out for having no area: those the mesh reader skipped and those
     /// the placement (or the rounding to the render's scalar) made degenerate.
@@ -217,6 +219,13 @@ fn add_object<F: Float>(
         ObjectSpec::Sphere { center, radius, .. } => Solid::Sphere { center, radius },
         ObjectSpec::Plane { point, normal, .. } => Solid::Plane { point, normal },
         ObjectSpec::Triangle { a, b, c, .. } => Solid::Triangle { a, b, c },
+        ObjectSpec::Disk {
+            center,
+            normal,
+            radius,
+            matrix,
+            ..
+        } => super::disk::solid((root, at), center, normal, radius, matrix)?,
         ObjectSpec::Mesh {
             ref file,
             scale,
@@ -400,6 +409,7 @@ fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
             ShapeKind::Sphere(_) => summary.spheres += 1,
             ShapeKind::Plane(_) => summary.planes += 1,
             ShapeKind::Triangle(_) => summary.triangles += 1,
+            ShapeKind::Disk(_) => summary.disks += 1,
             ShapeKind::Mesh(m) => summary.triangles += m.parts() as usize,
             ShapeKind::Instance(i) => {
                 summary.instances += 1;

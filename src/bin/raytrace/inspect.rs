@@ -52,8 +52,8 @@ pub fn check(path: &Path, defines: &[(String, String)]) -> Result<()> {
         }
     }
     println!(
-        "  objects: {} spheres, {} planes, {} triangles (meshes: {}, instances: {}), {} lights",
-        s.spheres, s.planes, s.triangles, s.meshes, s.instances, s.lights
+        "  objects: {} spheres, {} planes, {} disks, {} triangles (meshes: {}, instances: {}), {} lights",
+        s.spheres, s.planes, s.disks, s.triangles, s.meshes, s.instances, s.lights
     );
     if s.emitters > 0 {
         println!(
