@@ -6,7 +6,7 @@ use super::location::KeyPath;
 use super::make::Solid;
 use super::model::Triple;
 use super::transform::Placement;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::transform::Affine;
 
 /// The disk the object at `at` describes: `center`, `normal` and `radius`, or, instead of
@@ -26,9 +26,14 @@ pub(super) fn solid(
             .key("matrix")
             .error("give either `matrix` or `center`, `normal` and `radius`, not both"));
     }
-    let map = Affine::from_rows(rows).map_err(|e| blame(root, &at.key("matrix"), e))?;
+    // The map's own errors at `matrix` itself, where the mistake is written.
+    let at_matrix = |e: Error| match e {
+        Error::InvalidValue { field, reason } => at.key("matrix").error_about(Some(field), reason),
+        other => blame(root, &at.key("matrix"), other),
+    };
+    let map = Affine::from_rows(rows).map_err(at_matrix)?;
     // Refused as a mesh's map is: a map that flattens space has no normal (M⁻ᵀẑ).
-    Placement::map(map).map_err(|e| blame(root, &at.key("matrix"), e))?;
+    Placement::map(map).map_err(at_matrix)?;
     Ok(by_map(&map))
 }
 

@@ -33,6 +33,8 @@ mod bvh_scene;
 mod cli;
 mod custom_shape;
 mod degenerate_scatter;
+mod disk_files;
+mod disk_light;
 mod emission;
 mod emission_analytic;
 mod emitter_chi2;
