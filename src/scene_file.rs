@@ -42,6 +42,8 @@ mod location;
 mod make;
 mod make_bsdf;
 mod model;
+mod mtl_spec;
+mod obj_materials;
 mod objects;
 mod resolve;
 mod texture_spec;
@@ -59,6 +61,7 @@ pub use light::LightSpec;
 pub use model::{
     BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, RenderOptions, Triple,
 };
+pub use obj_materials::FROM_MTL;
 pub use objects::{MeshDef, ObjectSpec, Scale};
 pub use texture_spec::{ScalarRef, TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
@@ -293,6 +296,13 @@ impl SceneFile {
     /// [`Warning::NoObjects`], [`Warning::NoLight`].
     pub fn warnings(&self) -> Vec<Warning> {
         warnings::static_warnings(self)
+    }
+
+    /// For each mesh object whose one `material` covers an OBJ file that names materials
+    /// with `usemtl`: a note naming the object, the file and the names, which are not used
+    /// (`material = "mtl"`, [`FROM_MTL`], takes them). Reads those OBJ files' text.
+    pub fn unused_obj_materials(&self) -> Vec<String> {
+        obj_materials::unused_usemtl(self)
     }
 
     /// [`Warning::DarkPreview`] if a small render of `built` (this file's scene) is black

@@ -68,6 +68,9 @@ pub struct Summary {
     pub bounds: Option<Aabb<f64>>,
     /// Whether the scene intersects through a BVH.
     pub uses_bvh: bool,
+    /// What was read but has no effect, each naming its file and line: the keys of an OBJ
+    /// file's `.mtl` materials this renderer has no counterpart for.
+    pub notes: Vec<String>,
 }
 
 /// Builds `file` in scalar `F`.
@@ -107,6 +110,10 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
     let prototypes = prototypes(&root, file, folder)?;
     for (i, object) in file.objects.iter().enumerate() {
         let at = root.key("objects").index(i);
+        if super::obj_materials::wants_mtl(object) {
+            super::obj_materials::add(&mut scene, &mut summary, (&root, &at), object, (folder, &materials))?;
+            continue;
+        }
         let Some(m) = materials.get(object.material()).cloned() else {
             return Err(at
                 .key("material")
@@ -236,19 +243,9 @@ fn add_object<F: Float>(
             matrix,
             ..
         } => {
-            let placement = match matrix {
-                Some(rows) => {
-                    only_matrix(at, scale, rotate, translate)?;
-                    let map = Affine::from_rows(rows).map_err(|e| blame(root, &at.key("matrix"), e))?;
-                    Placement::map(map).map_err(|e| blame(root, &at.key("matrix"), e))?
-                }
-                None => placement(at, scale.factors(), rotate, translate)?,
-            };
+            let placement = mesh_placement((root, at), scale, rotate, translate, matrix)?;
             let path = folder.join(file);
-            let attributes = Attributes {
-                normals: !face_normals,
-                flip_v: flip_tex_coords.unwrap_or_else(|| crate::mesh::flips_tex_coords(&path)),
-            };
+            let attributes = Attributes::new(&path, face_normals, flip_tex_coords);
             let shape = mesh::<F>(root, at, &path, &placement, attributes, summary)?;
             scene.add(shape, material);
             return Ok(());
@@ -281,6 +278,24 @@ fn add_object<F: Float>(
     let shape = checked::<F, _>(root, at, make::shape::<f64>(solid), make::shape::<F>(solid))?;
     scene.add(shape, material);
     Ok(())
+}
+
+/// A mesh object's placement: its `matrix`, or its `scale`, `rotate` and `translate`.
+pub(super) fn mesh_placement(
+    (root, at): (&KeyPath, &KeyPath),
+    scale: Scale,
+    rotate: Triple,
+    translate: Triple,
+    matrix: Option<[[f64; 4]; 3]>,
+) -> Result<Placement> {
+    match matrix {
+        Some(rows) => {
+            only_matrix(at, scale, rotate, translate)?;
+            let map = Affine::from_rows(rows).map_err(|e| blame(root, &at.key("matrix"), e))?;
+            Placement::map(map).map_err(|e| blame(root, &at.key("matrix"), e))
+        }
+        None => placement(at, scale.factors(), rotate, translate),
+    }
 }
 
 /// Every `[meshes]` entry read once, by name, for the instances to share.
@@ -345,11 +360,22 @@ fn placement(at: &KeyPath, scale: Triple, rotate: Triple, translate: Triple) -> 
 
 /// Which of a mesh file's vertex attributes a mesh takes, and how.
 #[derive(Clone, Copy, Debug)]
-struct Attributes {
+pub(super) struct Attributes {
     /// Whether its normals are kept (not `face_normals`).
     normals: bool,
     /// Whether its texture coordinates' `v` is flipped, `v ↦ 1 − v`.
-    flip_v: bool,
+    pub(super) flip_v: bool,
+}
+
+impl Attributes {
+    /// A mesh object's `face_normals` and `flip_tex_coords` (unset: the default for the
+    /// format of the file at `path`).
+    pub(super) fn new(path: &Path, face_normals: bool, flip_tex_coords: Option<bool>) -> Self {
+        Self {
+            normals: !face_normals,
+            flip_v: flip_tex_coords.unwrap_or_else(|| crate::mesh::flips_tex_coords(path)),
+        }
+    }
 }
 
 /// The mesh at `path`, placed and rounded to `F`, with the file's normals (placed as
@@ -364,6 +390,19 @@ fn mesh<F: Float>(
     summary: &mut Summary,
 ) -> Result<Mesh<F>> {
     let mesh = crate::mesh::load(path).map_err(|e| at.key("file").wrap(e))?;
+    placed(root, at, mesh, placement, attributes, summary)
+}
+
+/// The mesh `mesh` (read from the file of the object at `at`) placed and rounded to `F`,
+/// as [`mesh`] makes it.
+pub(super) fn placed<F: Float>(
+    root: &KeyPath,
+    at: &KeyPath,
+    mesh: crate::mesh::MeshData,
+    placement: &Placement,
+    attributes: Attributes,
+    summary: &mut Summary,
+) -> Result<Mesh<F>> {
     let mut vertices = Vec::with_capacity(mesh.positions.len());
     for (k, &p) in mesh.positions.iter().enumerate() {
         let placed = placement.apply(p);

@@ -91,6 +91,12 @@ pub fn check(path: &Path, defines: &[(String, String)]) -> Result<()> {
     for w in warnings {
         eprintln!("warning: {}: {w}", path.display());
     }
+    for note in file.unused_obj_materials() {
+        eprintln!("warning: {}: {note}", path.display());
+    }
+    for note in &s.notes {
+        eprintln!("warning: {note}");
+    }
     Ok(())
 }
 

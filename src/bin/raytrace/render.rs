@@ -142,6 +142,9 @@ fn render_in<F: Float>(file: &SceneFile, args: &RenderArgs) -> Result<(Render, (
     for w in file.warnings() {
         eprintln!("warning: {}: {w}", file.path().display());
     }
+    for note in &built.summary.notes {
+        eprintln!("warning: {note}");
+    }
     if built.summary.skipped_degenerate > 0 {
         eprintln!(
             "note: skipped {} mesh faces without area",
