@@ -54,6 +54,8 @@ mod mesh_attributes;
 mod meshes;
 mod mis_unbiased;
 mod mitsuba_import;
+mod obj_material_errors;
+mod obj_materials;
 mod outputs;
 mod random_scenes;
 mod reference;
