@@ -13,7 +13,7 @@ mod ply;
 mod source;
 
 pub use mtl::{At, MtlLibrary, MtlMap, MtlMaterial, read as read_mtl};
-pub use obj_parts::{ObjPart, ObjParts, load_parts, usemtl_names};
+pub use obj_parts::{ObjPart, ObjParts, load_parts, material_files, usemtl_names};
 pub use source::{MAX_LINE_BYTES, MAX_MESH_BYTES};
 
 use crate::error::{Error, Result};

@@ -207,17 +207,26 @@ impl SceneFile {
 
     /// The other files the scene is made from, as [`SceneFile::build`] finds them
     /// (relative to the scene file's folder): the environment map's, each mesh's in the
-    /// order of `[[objects]]`, the `[meshes]` entries' by name, then the textures'
-    /// [images](Self::image_files).
+    /// order of `[[objects]]` (followed, for one with `material = "mtl"`, by its `.mtl`
+    /// libraries and their images that exist), the `[meshes]` entries' by name, then the
+    /// textures' [images](Self::image_files).
     pub fn input_files(&self) -> Vec<PathBuf> {
         let folder = self.path.parent().unwrap_or(Path::new(""));
         let map = match &self.background {
             BackgroundSpec::Envmap { file, .. } => Some(folder.join(file)),
             _ => None,
         };
-        let meshes = self.objects.iter().filter_map(|o| match o {
-            ObjectSpec::Mesh { file, .. } => Some(folder.join(file)),
-            _ => None,
+        let meshes = self.objects.iter().flat_map(|o| match o {
+            ObjectSpec::Mesh { file, .. } => {
+                let path = folder.join(file);
+                let materials = if obj_materials::wants_mtl(o) {
+                    crate::mesh::material_files(&path)
+                } else {
+                    Vec::new()
+                };
+                std::iter::once(path).chain(materials).collect()
+            }
+            _ => Vec::new(),
         });
         let shared = self.meshes.values().map(|m| folder.join(&m.file));
         map.into_iter()

@@ -13,7 +13,7 @@ use crate::error::{Error, Result};
 use crate::vec3::Vec3;
 use std::collections::HashMap;
 use std::io::BufRead;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// One material's share of an OBJ file.
 #[derive(Clone, Debug, PartialEq)]
@@ -146,6 +146,35 @@ pub fn load_parts(path: &Path) -> Result<ObjParts> {
 /// [`Error::Mesh`] if the file cannot be read as text.
 pub fn usemtl_names(path: &Path) -> Result<Vec<String>> {
     Ok(scan(path)?.names.into_iter().map(|n| n.value).collect())
+}
+
+/// The files an OBJ file's materials are read from, those that exist: its `.mtl`
+/// libraries, then the images each names (`map_Kd`, `map_Bump`, `norm`), each once. For
+/// the list of a scene's inputs; reading the materials reports what is missing.
+pub fn material_files(path: &Path) -> Vec<PathBuf> {
+    let folder = path.parent().unwrap_or(Path::new(""));
+    let Ok(found) = scan(path) else {
+        return Vec::new();
+    };
+    let mut files: Vec<PathBuf> = Vec::new();
+    let mut add = |file: PathBuf| {
+        if file.is_file() && !files.contains(&file) {
+            files.push(file);
+        }
+    };
+    for library in found.libraries {
+        let file = folder.join(library.value.replace('\\', "/"));
+        let Ok(read) = mtl::read(&file) else {
+            continue;
+        };
+        add(file);
+        for m in read.materials {
+            for map in [m.map_kd, m.bump, m.norm].into_iter().flatten() {
+                add(map.value.file);
+            }
+        }
+    }
+    files
 }
 
 /// Reads the OBJ file's `mtllib`, `usemtl`, `f` and `l` lines.

@@ -113,6 +113,11 @@ fn map_kd_is_found_beside_the_mtl_file() {
         &dir,
         &format!("{LIT}\n[[objects]]\ntype = \"mesh\"\nfile = \"models/quad.obj\"\nmaterial = \"mtl\"\n"),
     );
+    // The library and its image are inputs of the scene (hashed into tiles, never
+    // overwritten by an output).
+    let file = SceneFile::load(&dir.path("scene.toml")).unwrap();
+    let want = ["models/quad.obj", "models/looks/wood.mtl", "models/looks/tex/grain.png"];
+    assert_eq!(file.input_files(), want.map(|f| dir.path(f)));
     // Ka is read but has no counterpart: a note naming the file and line.
     let notes = &from_mtl.summary.notes;
     assert!(
@@ -221,4 +226,41 @@ fn what_is_not_used_is_noted_with_its_file_and_line() {
     // It renders as before, with one material and no note.
     let b = file.build::<f64>().unwrap();
     assert!(b.summary.notes.is_empty() && b.summary.meshes == 1);
+    // `raytrace check` says so, as a warning naming the scene file.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytrace"))
+        .args(["check".as_ref(), path.as_os_str()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("named.toml: objects[0]: ") && stderr.contains("`material = \"mtl\"` takes them"),
+        "{stderr}"
+    );
+}
+
+/// The example of `docs/SCENE_FORMAT.md` ("OBJ materials") builds as it says.
+#[test]
+fn the_documented_example_builds() {
+    let dir = Scratch::new("obj-doc");
+    std::fs::create_dir_all(dir.path("textures")).unwrap();
+    dir.png8("textures/shade_normals.png", 2, 1, &[[128, 128, 255], [150, 128, 240]]);
+    dir.file(
+        "lamp.mtl",
+        "newmtl shade\nKd 0.6 0.1 0.1\nKs 0.5 0.5 0.5\nNs 200\nillum 2\n\
+         map_Bump -bm 1.0 textures/shade_normals.png\n\nnewmtl bulb\nKd 0.9 0.9 0.9\nKe 20 18 14\n",
+    );
+    dir.file(
+        "lamp.obj",
+        "mtllib lamp.mtl\nv -1 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n\
+         usemtl shade\nf 1 2 3\nusemtl bulb\nf 1 4 2\n",
+    );
+    let b = built(
+        &dir,
+        "[[objects]]\ntype = \"mesh\"\nfile = \"lamp.obj\"\ntranslate = [0, 0, -3]\nmaterial = \"mtl\"\n",
+    );
+    let materials: Vec<_> = b.scene.objects().iter().map(|o| &o.material).collect();
+    assert!(matches!(materials[0], MaterialKind::NormalMap(_)), "{materials:?}");
+    assert!(matches!(materials[1], MaterialKind::Emissive(_)), "{materials:?}");
+    assert!(b.summary.notes.is_empty(), "{:?}", b.summary.notes);
 }
