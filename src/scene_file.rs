@@ -46,6 +46,7 @@ mod mtl_spec;
 mod obj_materials;
 mod objects;
 mod resolve;
+mod summary;
 mod texture_spec;
 mod transform;
 mod triple;
@@ -55,7 +56,7 @@ pub use bsdf::{
     ConductorSpec, DistributionSpec, IorSpec, PlasticSpec, RoughConductorSpec, RoughDielectricSpec,
     RoughPlasticSpec, RoughnessSpec, ThinDielectricSpec, TwoSidedSpec,
 };
-pub use build::{Built, Summary};
+pub use build::Built;
 pub use camera::FileCamera;
 pub use light::LightSpec;
 pub use model::{
@@ -63,6 +64,7 @@ pub use model::{
 };
 pub use obj_materials::FROM_MTL;
 pub use objects::{MeshDef, ObjectSpec, Scale};
+pub use summary::Summary;
 pub use texture_spec::{ScalarRef, TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
 pub use warnings::Warning;

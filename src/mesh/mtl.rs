@@ -172,11 +172,24 @@ pub fn read(path: &Path) -> Result<MtlLibrary> {
                 }
                 material.illum = on(n as u32, line);
             }
-            "map_kd" => material.map_kd = on(map(key, &rest, folder, line, &mut library.ignored).map_err(at)?, line),
-            "map_bump" | "bump" => {
-                material.bump = on(map(key, &rest, folder, line, &mut library.ignored).map_err(at)?, line);
+            "map_kd" => {
+                material.map_kd = on(
+                    map(key, &rest, folder, line, &mut library.ignored).map_err(at)?,
+                    line,
+                )
             }
-            "norm" => material.norm = on(map(key, &rest, folder, line, &mut library.ignored).map_err(at)?, line),
+            "map_bump" | "bump" => {
+                material.bump = on(
+                    map(key, &rest, folder, line, &mut library.ignored).map_err(at)?,
+                    line,
+                );
+            }
+            "norm" => {
+                material.norm = on(
+                    map(key, &rest, folder, line, &mut library.ignored).map_err(at)?,
+                    line,
+                )
+            }
             _ => library.ignored.push(At {
                 value: key.to_string(),
                 line,
@@ -216,7 +229,10 @@ fn color(key: &str, words: &[&str]) -> Result<[f64; 3], String> {
         )),
         [x] => parse(key, x).map(|x| [x; 3]),
         [r, g, b] => Ok([parse(key, r)?, parse(key, g)?, parse(key, b)?]),
-        _ => Err(format!("`{key}` takes three numbers, r g b (got {})", words.len())),
+        _ => Err(format!(
+            "`{key}` takes three numbers, r g b (got {})",
+            words.len()
+        )),
     }
 }
 
@@ -232,7 +248,13 @@ fn option_arity(option: &str) -> Option<usize> {
 }
 
 /// The image of `key`: its options, then its file name (which may hold spaces).
-fn map(key: &str, words: &[&str], folder: &Path, line: u64, ignored: &mut Vec<At<String>>) -> Result<MtlMap, String> {
+fn map(
+    key: &str,
+    words: &[&str],
+    folder: &Path,
+    line: u64,
+    ignored: &mut Vec<At<String>>,
+) -> Result<MtlMap, String> {
     let mut m = MtlMap {
         file: PathBuf::new(),
         scale: [1.0; 2],
@@ -246,7 +268,10 @@ fn map(key: &str, words: &[&str], folder: &Path, line: u64, ignored: &mut Vec<At
             return Err(format!("`{key}`: unknown option `{option}`"));
         };
         // Up to `most` arguments; the numeric options stop at the first word that is not a number.
-        let numeric = !matches!(*option, "-blendu" | "-blendv" | "-cc" | "-clamp" | "-imfchan" | "-type");
+        let numeric = !matches!(
+            *option,
+            "-blendu" | "-blendv" | "-cc" | "-clamp" | "-imfchan" | "-type"
+        );
         let mut args = Vec::new();
         while args.len() < most
             && let Some(w) = words.get(k + 1 + args.len())
@@ -257,7 +282,11 @@ fn map(key: &str, words: &[&str], folder: &Path, line: u64, ignored: &mut Vec<At
         if args.is_empty() {
             return Err(format!("`{key}`: option `{option}` needs a value"));
         }
-        let numbers = || args.iter().map(|a| parse(key, a)).collect::<Result<Vec<f64>, String>>();
+        let numbers = || {
+            args.iter()
+                .map(|a| parse(key, a))
+                .collect::<Result<Vec<f64>, String>>()
+        };
         match *option {
             "-s" => {
                 let n = numbers()?;

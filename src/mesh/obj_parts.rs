@@ -90,7 +90,10 @@ pub fn load_parts(path: &Path) -> Result<ObjParts> {
             other => other,
         })?;
         for m in &library.materials {
-            if let Some(first) = libraries.iter().find(|l| l.materials.iter().any(|n| n.name == m.name)) {
+            if let Some(first) = libraries
+                .iter()
+                .find(|l| l.materials.iter().any(|n| n.name == m.name))
+            {
                 return Err(fail(format!(
                     "line {line}: material `{}` is defined in {} and in {}",
                     m.name,
@@ -101,7 +104,12 @@ pub fn load_parts(path: &Path) -> Result<ObjParts> {
         }
         libraries.push(library);
     }
-    let find = |name: &str| libraries.iter().flat_map(|l| &l.materials).find(|m| m.name == name);
+    let find = |name: &str| {
+        libraries
+            .iter()
+            .flat_map(|l| &l.materials)
+            .find(|m| m.name == name)
+    };
     let mut materials = Vec::with_capacity(scan.names.len());
     for At { value: name, line } in &scan.names {
         let Some(m) = find(name) else {
@@ -117,7 +125,9 @@ pub fn load_parts(path: &Path) -> Result<ObjParts> {
             } else {
                 format!("its libraries define {}", known.join(", "))
             };
-            return Err(fail(format!("line {line}: `usemtl {name}`: no such material: {why}")));
+            return Err(fail(format!(
+                "line {line}: `usemtl {name}`: no such material: {why}"
+            )));
         };
         materials.push(m.clone());
     }

@@ -19,7 +19,11 @@ pub(super) fn solid(
     matrix: Option<[[f64; 4]; 3]>,
 ) -> Result<Solid> {
     let Some(rows) = matrix else {
-        return Ok(Solid::Disk { center, normal, radius });
+        return Ok(Solid::Disk {
+            center,
+            normal,
+            radius,
+        });
     };
     if center != [0.0; 3] || normal != [0.0, 0.0, 1.0] || radius != 1.0 {
         return Err(at

@@ -66,7 +66,8 @@ pub fn map(m: &MtlMaterial) -> Result<Mapped, (At<&'static str>, String)> {
         None => TextureRef::Color(kd.unwrap_or(DEFAULT_KD)),
     };
     let alpha = match &m.ns {
-        Some(At { value, line }) if !(*value >= 0.0) => {
+        // The reader refuses a number that is not finite.
+        Some(At { value, line }) if *value < 0.0 => {
             return Err((at("Ns", *line), format!("must be ≥ 0 (got {value})")));
         }
         Some(ns) => alpha_of_exponent(ns.value),
@@ -82,7 +83,11 @@ pub fn map(m: &MtlMaterial) -> Result<Mapped, (At<&'static str>, String)> {
     let opaque = m.d.as_ref().is_none_or(|d| d.value >= 1.0);
     let glass = !opaque || matches!(illum, Some(4 | 6 | 7 | 9));
     let spec = if ke.is_some_and(bright) {
-        unused_if(DIFFUSE_MAP, m.map_kd.as_ref().map(|t| t.line), "an emitter's albedo is `Kd` alone");
+        unused_if(
+            DIFFUSE_MAP,
+            m.map_kd.as_ref().map(|t| t.line),
+            "an emitter's albedo is `Kd` alone",
+        );
         unused_if("Ks", line(&m.ks), "an emitter reflects as a matte surface");
         MaterialSpec::Emissive {
             radiance: ke.unwrap_or_default(),
@@ -91,14 +96,22 @@ pub fn map(m: &MtlMaterial) -> Result<Mapped, (At<&'static str>, String)> {
         }
     } else if glass {
         unused_if("Kd", line(&m.kd), "glass has no diffuse colour (`Tf` tints it)");
-        unused_if(DIFFUSE_MAP, m.map_kd.as_ref().map(|t| t.line), "glass has no diffuse colour");
+        unused_if(
+            DIFFUSE_MAP,
+            m.map_kd.as_ref().map(|t| t.line),
+            "glass has no diffuse colour",
+        );
         MaterialSpec::Dielectric {
             index: m.ni.as_ref().map_or(DEFAULT_NI, |n| n.value),
             albedo: value(&m.tf),
             fresnel: FresnelSpec::Exact,
         }
     } else if matches!(illum, Some(3 | 5 | 8)) && ks.is_some_and(bright) && !kd.is_some_and(bright) {
-        unused_if(DIFFUSE_MAP, m.map_kd.as_ref().map(|t| t.line), "a metal has no diffuse colour");
+        unused_if(
+            DIFFUSE_MAP,
+            m.map_kd.as_ref().map(|t| t.line),
+            "a metal has no diffuse colour",
+        );
         two_sided(MaterialSpec::RoughConductor(RoughConductorSpec {
             material: None,
             eta: None,

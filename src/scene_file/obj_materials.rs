@@ -3,13 +3,14 @@
 //! mapped as [`mtl_spec::map`] says and built with its images.
 
 use super::SceneFile;
-use super::build::{Attributes, Summary, mesh_placement, placed};
+use super::build::{Attributes, mesh_placement, placed};
 use super::check::vec;
 use super::location::KeyPath;
 use super::make;
 use super::mtl_spec::{self, DIFFUSE_MAP};
 use super::objects::ObjectSpec;
 use super::resolve::{Inputs, TextureUse};
+use super::summary::Summary;
 use super::texture_spec::TextureRef;
 use crate::error::{Error, Field, Result};
 use crate::float::{Float, lit};
@@ -50,7 +51,9 @@ pub(super) fn add<F: Float>(
         ..
     } = object
     else {
-        return Err(at.key("material").error("only a mesh object takes its file's materials"));
+        return Err(at
+            .key("material")
+            .error("only a mesh object takes its file's materials"));
     };
     if materials.contains_key(FROM_MTL) {
         return Err(at.key("material").error(format!(
@@ -123,7 +126,11 @@ fn mtl_error(m: &MtlMaterial, key: &str, line: u64, why: impl std::fmt::Display)
 }
 
 impl Maps {
-    fn read(m: &MtlMaterial, bitmaps: &mut HashMap<(PathBuf, Decode), Arc<Bitmap>>, notes: &mut Vec<String>) -> Result<Self> {
+    fn read(
+        m: &MtlMaterial,
+        bitmaps: &mut HashMap<(PathBuf, Decode), Arc<Bitmap>>,
+        notes: &mut Vec<String>,
+    ) -> Result<Self> {
         let mut load = |key: &str, map: &At<MtlMap>, decode| {
             let id = (map.value.file.clone(), decode);
             if let Some(b) = bitmaps.get(&id) {
@@ -134,13 +141,25 @@ impl Maps {
             Ok::<_, Error>((map.value.clone(), bitmap))
         };
         let note = |key: &str, line: u64, why: String| {
-            format!("{}: line {line}: material `{}`: `{key}` {why}", m.library.display(), m.name)
+            format!(
+                "{}: line {line}: material `{}`: `{key}` {why}",
+                m.library.display(),
+                m.name
+            )
         };
-        let diffuse = m.map_kd.as_ref().map(|t| load("map_Kd", t, Decode::Color)).transpose()?;
+        let diffuse = m
+            .map_kd
+            .as_ref()
+            .map(|t| load("map_Kd", t, Decode::Color))
+            .transpose()?;
         let normal = match (&m.norm, &m.bump) {
             (Some(norm), bump) => {
                 if let Some(b) = bump {
-                    notes.push(note("map_Bump", b.line, "is not used: `norm` gives the normal map".into()));
+                    notes.push(note(
+                        "map_Bump",
+                        b.line,
+                        "is not used: `norm` gives the normal map".into(),
+                    ));
                 }
                 Some(load("norm", norm, Decode::Raw)?)
             }
@@ -148,7 +167,8 @@ impl Maps {
                 let read = load("map_Bump", bump, Decode::Raw)?;
                 if read.1.is_grey() {
                     // A height map: its slopes would perturb the normal, which this renderer does not do.
-                    let why = "is a height map (one channel), not a normal map: not used (no bump mapping here)";
+                    let why =
+                        "is a height map (one channel), not a normal map: not used (no bump mapping here)";
                     notes.push(note("map_Bump", bump.line, why.into()));
                     None
                 } else {
@@ -159,7 +179,11 @@ impl Maps {
         };
         for t in [&m.norm, &m.bump].into_iter().flatten() {
             if let Some(bm) = t.value.bump_multiplier.filter(|&bm| bm != 1.0) {
-                notes.push(note("-bm", t.line, format!("{bm} is not applied: a normal map bends at full strength")));
+                notes.push(note(
+                    "-bm",
+                    t.line,
+                    format!("{bm} is not applied: a normal map bends at full strength"),
+                ));
             }
         }
         Ok(Self { diffuse, normal })
@@ -168,7 +192,12 @@ impl Maps {
 
 /// The material of `m` in `G`, its values checked in `f64` first (an error says which key
 /// of the `.mtl` file, and whether only the rounding to `G` refused it).
-fn material<G: Float>(m: &MtlMaterial, maps: &Maps, flip_v: bool, notes: &mut Vec<String>) -> Result<MaterialKind<G>> {
+fn material<G: Float>(
+    m: &MtlMaterial,
+    maps: &Maps,
+    flip_v: bool,
+    notes: &mut Vec<String>,
+) -> Result<MaterialKind<G>> {
     let mapped = mtl_spec::map(m).map_err(|(key, why)| mtl_error(m, key.value, key.line, why))?;
     for (key, why) in &mapped.unused {
         notes.push(format!(
@@ -215,7 +244,11 @@ fn located(m: &MtlMaterial, maps: &Maps, e: Error, tail: &str) -> Error {
 }
 
 /// The mapped material `spec` in `G`, wrapped in the normal map if there is one.
-fn build_in<G: Float>(spec: &super::model::MaterialSpec, maps: &Maps, flip_v: bool) -> Result<MaterialKind<G>> {
+fn build_in<G: Float>(
+    spec: &super::model::MaterialSpec,
+    maps: &Maps,
+    flip_v: bool,
+) -> Result<MaterialKind<G>> {
     let diffuse = match &maps.diffuse {
         Some((map, bitmap)) => Some(Texture::from(image::<G>(bitmap, map, flip_v)?)),
         None => None,
@@ -235,7 +268,9 @@ fn image<G: Float>(bitmap: &Arc<Bitmap>, map: &MtlMap, flip_v: bool) -> Result<I
     let ov = if flip_v { 1.0 - sv - ov } else { ov };
     let uv = UvMap::new([lit(su), lit(sv)], [lit(ou), lit(ov)])?;
     let wrap = if map.clamp { Wrap::Clamp } else { Wrap::Repeat };
-    Ok(ImageTexture::new(Arc::clone(bitmap)).with_wrap(wrap).with_uv_map(uv))
+    Ok(ImageTexture::new(Arc::clone(bitmap))
+        .with_wrap(wrap)
+        .with_uv_map(uv))
 }
 
 /// What a mapped material's keys name: colours, and its `map_Kd` by [`DIFFUSE_MAP`].
@@ -273,7 +308,10 @@ pub(super) fn unused_usemtl(file: &SceneFile) -> Vec<String> {
     let folder = file.path().parent().unwrap_or(Path::new(""));
     let mut found = Vec::new();
     for (i, object) in file.objects.iter().enumerate() {
-        let ObjectSpec::Mesh { file: mesh, material, .. } = object else {
+        let ObjectSpec::Mesh {
+            file: mesh, material, ..
+        } = object
+        else {
             continue;
         };
         let path = folder.join(mesh);

@@ -109,10 +109,12 @@ fn disk_density_is_per_solid_angle<F: Float>() {
     for (k, h) in [0.3, 2.0, 40.0].into_iter().enumerate() {
         let at = v::<F>([0.0, 2.0 - h, 0.0]);
         let want = TAU * (1.0 - h / (h * h + 0.64f64).sqrt());
-        let (mean, z) = mean_inverse_density(70 + k as u64, want, |u| {
-            disk.sample(at, u).unwrap().pdf.to_f64()
-        });
-        println!("disk {} from h = {h}: mean 1/p = {mean}, Ω = {want}, z = {z}", F::NAME);
+        let (mean, z) =
+            mean_inverse_density(70 + k as u64, want, |u| disk.sample(at, u).unwrap().pdf.to_f64());
+        println!(
+            "disk {} from h = {h}: mean 1/p = {mean}, Ω = {want}, z = {z}",
+            F::NAME
+        );
         assert!(z.abs() < Z_MAX, "{} h = {h}: z = {z}", F::NAME);
     }
 }
@@ -200,7 +202,9 @@ fn estimate<F: Float>(scene: &EnumScene<F>, ray: &Ray<F>, sampling: LightSamplin
     let mut tracer = Tracer::new(scene, 2).light_sampling(sampling);
     let (mut sum, mut sum2) = ([0.0; 3], [0.0; 3]);
     for seed in 0..N {
-        let c = tracer.trace(ray, 0, &mut DefaultRng::seed_from_u64(seed)).to_f64();
+        let c = tracer
+            .trace(ray, 0, &mut DefaultRng::seed_from_u64(seed))
+            .to_f64();
         for k in 0..3 {
             sum[k] += c[k];
             sum2[k] += c[k] * c[k];

@@ -145,11 +145,18 @@ impl<F: Float> Flat<F> for Disk<F> {
         };
         let (u, v) = (in_cube(rng, size), in_cube(rng, size));
         let disk = Disk::with_axes(to_vec(centre), to_vec(u), to_vec(v)).ok()?;
-        Some(if rng.random::<bool>() { disk.flipped() } else { disk })
+        Some(if rng.random::<bool>() {
+            disk.flipped()
+        } else {
+            disk
+        })
     }
     fn target(&self, rng: &mut Xoshiro256PlusPlus, _scale: f64) -> Vec3<F> {
         // C + aU + bV for (a, b) uniform in the unit disk, in f64.
-        let (r, phi) = (rng.random::<f64>().sqrt(), std::f64::consts::TAU * rng.random::<f64>());
+        let (r, phi) = (
+            rng.random::<f64>().sqrt(),
+            std::f64::consts::TAU * rng.random::<f64>(),
+        );
         let (a, b) = (r * phi.cos(), r * phi.sin());
         let c = self.center().to_f64();
         let [u, v] = self.axes().map(|x| x.to_f64());

@@ -40,17 +40,30 @@ fn each_mistake_names_its_file_and_line() {
         (
             "bare",
             vec![("lib.mtl", lib.to_string()), ("m.obj", obj("mtllib lib.mtl\n"))],
-            &["objects[0].file", "m.obj: line 5: face 1 comes before any `usemtl`"][..],
+            &[
+                "objects[0].file",
+                "m.obj: line 5: face 1 comes before any `usemtl`",
+            ][..],
         ),
         (
             "unknown",
-            vec![("lib.mtl", lib.into()), ("m.obj", obj("mtllib lib.mtl\nusemtl green\n"))],
-            &["objects[0].file", "m.obj: line 2: `usemtl green`: no such material: its libraries define `red`"],
+            vec![
+                ("lib.mtl", lib.into()),
+                ("m.obj", obj("mtllib lib.mtl\nusemtl green\n")),
+            ],
+            &[
+                "objects[0].file",
+                "m.obj: line 2: `usemtl green`: no such material: its libraries define `red`",
+            ],
         ),
         (
             "missing library",
             vec![("m.obj", obj("mtllib gone.mtl\nusemtl red\n"))],
-            &["objects[0].file", "m.obj: line 1: `mtllib gone.mtl`:", "gone.mtl: cannot open"],
+            &[
+                "objects[0].file",
+                "m.obj: line 1: `mtllib gone.mtl`:",
+                "gone.mtl: cannot open",
+            ],
         ),
         (
             "missing image",
@@ -58,7 +71,11 @@ fn each_mistake_names_its_file_and_line() {
                 ("lib.mtl", "newmtl red\n\nmap_Kd -s 2 2 gone.png\n".into()),
                 ("m.obj", obj("mtllib lib.mtl\nusemtl red\n")),
             ],
-            &["objects[0].material", "lib.mtl: line 3: material `red`: `map_Kd`:", "gone.png"],
+            &[
+                "objects[0].material",
+                "lib.mtl: line 3: material `red`: `map_Kd`:",
+                "gone.png",
+            ],
         ),
         (
             "albedo",
@@ -66,7 +83,10 @@ fn each_mistake_names_its_file_and_line() {
                 ("lib.mtl", "newmtl red\n# too bright\nKd 1.5 0 0\n".into()),
                 ("m.obj", obj("mtllib lib.mtl\nusemtl red\n")),
             ],
-            &["objects[0].material", "lib.mtl: line 3: material `red`: `Kd`: each channel must be in [0, 1]"],
+            &[
+                "objects[0].material",
+                "lib.mtl: line 3: material `red`: `Kd`: each channel must be in [0, 1]",
+            ],
         ),
         (
             "specular",

@@ -26,7 +26,9 @@ pub fn built(dir: &Scratch, text: &str) -> Built<f64> {
 }
 
 fn image(built: &Built<f64>) -> raytrace::Image {
-    render(&built.scene, &built.camera, &built.settings).unwrap().image
+    render(&built.scene, &built.camera, &built.settings)
+        .unwrap()
+        .image
 }
 
 /// The spec's camera (16 × 8, one ray through each pixel centre, no bounce after the
@@ -103,12 +105,20 @@ fn each_group_gets_its_material() {
 fn map_kd_is_found_beside_the_mtl_file() {
     let dir = Scratch::new("obj-map-kd");
     std::fs::create_dir_all(dir.path("models/looks/tex")).unwrap();
-    let texels: Vec<[u8; 3]> = (0..16).map(|k| [20 + 14 * k as u8, 200 - 10 * k as u8, 90]).collect();
+    let texels: Vec<[u8; 3]> = (0..16)
+        .map(|k| [20 + 14 * k as u8, 200 - 10 * k as u8, 90])
+        .collect();
     dir.png8("models/looks/tex/grain.png", 4, 4, &texels);
-    dir.file("models/looks/wood.mtl", "newmtl wood\nKa 1 1 1\nKd 1 1 1\nmap_Kd tex/grain.png\n");
+    dir.file(
+        "models/looks/wood.mtl",
+        "newmtl wood\nKa 1 1 1\nKd 1 1 1\nmap_Kd tex/grain.png\n",
+    );
     let quad = "v -5 -3 -2\nv 5 -3 -2\nv 5 3 -2\nv -5 3 -2\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n\
                 f 1/1 2/2 3/3 4/4\n";
-    dir.file("models/quad.obj", format!("mtllib looks/wood.mtl\nusemtl wood\n{quad}"));
+    dir.file(
+        "models/quad.obj",
+        format!("mtllib looks/wood.mtl\nusemtl wood\n{quad}"),
+    );
     let from_mtl = built(
         &dir,
         &format!("{LIT}\n[[objects]]\ntype = \"mesh\"\nfile = \"models/quad.obj\"\nmaterial = \"mtl\"\n"),
@@ -116,7 +126,11 @@ fn map_kd_is_found_beside_the_mtl_file() {
     // The library and its image are inputs of the scene (hashed into tiles, never
     // overwritten by an output).
     let file = SceneFile::load(&dir.path("scene.toml")).unwrap();
-    let want = ["models/quad.obj", "models/looks/wood.mtl", "models/looks/tex/grain.png"];
+    let want = [
+        "models/quad.obj",
+        "models/looks/wood.mtl",
+        "models/looks/tex/grain.png",
+    ];
     assert_eq!(file.input_files(), want.map(|f| dir.path(f)));
     // Ka is read but has no counterpart: a note naming the file and line.
     let notes = &from_mtl.summary.notes;
@@ -165,10 +179,7 @@ fn lamp_scene(dir: &Scratch, ke: &str) -> Built<f64> {
 fn ke_makes_an_emitter_that_lights_another_surface() {
     let dir = Scratch::new("obj-lamp");
     let lit = lamp_scene(&dir, "4 4 4");
-    assert_eq!(
-        (lit.summary.emitters, lit.summary.sampled_emitters),
-        (1, 1)
-    );
+    assert_eq!((lit.summary.emitters, lit.summary.sampled_emitters), (1, 1));
     let floor = &lit.scene.objects()[0].material;
     assert!(matches!(floor, MaterialKind::Lambertian(_)), "{floor:?}");
     let sum = |b: &Built<f64>| -> f64 { image(b).pixels().iter().flatten().sum() };
@@ -204,13 +215,19 @@ fn what_is_not_used_is_noted_with_its_file_and_line() {
         assert!(notes.contains(words), "{words}\n{notes}");
     }
     let materials: Vec<_> = b.scene.objects().iter().map(|o| &o.material).collect();
-    assert!(matches!(materials[0], MaterialKind::Lambertian(_)), "{materials:?}");
-    assert!(matches!(materials[1], MaterialKind::NormalMap(_)), "{materials:?}");
+    assert!(
+        matches!(materials[0], MaterialKind::Lambertian(_)),
+        "{materials:?}"
+    );
+    assert!(
+        matches!(materials[1], MaterialKind::NormalMap(_)),
+        "{materials:?}"
+    );
 
     // A named material covers the file: its `usemtl` groups are named as unused.
     let path = dir.file(
         "named.toml",
-        &format!(
+        format!(
             "{LIT}\n[materials.m]\ntype = \"lambertian\"\nalbedo = [0.5, 0.5, 0.5]\n\n\
              [[objects]]\ntype = \"mesh\"\nfile = \"both.obj\"\nmaterial = \"m\"\n"
         ),
@@ -244,7 +261,12 @@ fn what_is_not_used_is_noted_with_its_file_and_line() {
 fn the_documented_example_builds() {
     let dir = Scratch::new("obj-doc");
     std::fs::create_dir_all(dir.path("textures")).unwrap();
-    dir.png8("textures/shade_normals.png", 2, 1, &[[128, 128, 255], [150, 128, 240]]);
+    dir.png8(
+        "textures/shade_normals.png",
+        2,
+        1,
+        &[[128, 128, 255], [150, 128, 240]],
+    );
     dir.file(
         "lamp.mtl",
         "newmtl shade\nKd 0.6 0.1 0.1\nKs 0.5 0.5 0.5\nNs 200\nillum 2\n\
@@ -260,7 +282,10 @@ fn the_documented_example_builds() {
         "[[objects]]\ntype = \"mesh\"\nfile = \"lamp.obj\"\ntranslate = [0, 0, -3]\nmaterial = \"mtl\"\n",
     );
     let materials: Vec<_> = b.scene.objects().iter().map(|o| &o.material).collect();
-    assert!(matches!(materials[0], MaterialKind::NormalMap(_)), "{materials:?}");
+    assert!(
+        matches!(materials[0], MaterialKind::NormalMap(_)),
+        "{materials:?}"
+    );
     assert!(matches!(materials[1], MaterialKind::Emissive(_)), "{materials:?}");
     assert!(b.summary.notes.is_empty(), "{:?}", b.summary.notes);
 }

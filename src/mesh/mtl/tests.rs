@@ -31,9 +31,24 @@ fn keys_are_read_with_their_lines() {
     let [red, glass] = &lib.materials[..] else {
         panic!("{lib:?}")
     };
-    assert_eq!((red.name.as_str(), red.line, red.library.as_path()), ("red paint", 2, path.as_path()));
-    assert_eq!(red.kd, Some(At { value: [0.8, 0.1, 0.1], line: 5 }));
-    assert_eq!(red.ks, Some(At { value: [0.5; 3], line: 6 }));
+    assert_eq!(
+        (red.name.as_str(), red.line, red.library.as_path()),
+        ("red paint", 2, path.as_path())
+    );
+    assert_eq!(
+        red.kd,
+        Some(At {
+            value: [0.8, 0.1, 0.1],
+            line: 5
+        })
+    );
+    assert_eq!(
+        red.ks,
+        Some(At {
+            value: [0.5; 3],
+            line: 6
+        })
+    );
     assert_eq!(red.ke.as_ref().map(|k| k.value), Some([0.0; 3]));
     assert_eq!(red.ns.as_ref().map(|n| (n.value, n.line)), Some((250.0, 3)));
     assert_eq!(red.ni.as_ref().map(|n| n.value), Some(1.45));
@@ -47,7 +62,10 @@ fn keys_are_read_with_their_lines() {
     assert_eq!((map.scale, map.offset, map.clamp), ([2.0, 3.0], [0.5, 0.0], true));
     let bump = glass.bump.as_ref().unwrap();
     assert_eq!((bump.line, bump.value.bump_multiplier), (16, Some(0.5)));
-    assert_eq!(glass.norm.as_ref().unwrap().value.file, folder.join("normals.png"));
+    assert_eq!(
+        glass.norm.as_ref().unwrap().value.file,
+        folder.join("normals.png")
+    );
     let ignored: Vec<_> = lib.ignored.iter().map(|i| (i.value.as_str(), i.line)).collect();
     assert_eq!(ignored, [("Ka", 4), ("map_Kd -mm", 15)]);
 }
@@ -57,25 +75,56 @@ fn malformed_files_are_named_at_their_line() {
     for (name, text, words) in [
         ("orphan", "Kd 1 1 1\n", "line 1: `Kd` comes before any `newmtl`"),
         ("unnamed", "newmtl\n", "line 1: `newmtl` without a name"),
-        ("twice", "newmtl a\nnewmtl b\n\nnewmtl a\n", "line 4: material `a` is defined twice (first on line 1)"),
+        (
+            "twice",
+            "newmtl a\nnewmtl b\n\nnewmtl a\n",
+            "line 4: material `a` is defined twice (first on line 1)",
+        ),
         ("two", "newmtl a\nKd 1 1\n", "line 2: `Kd` takes three numbers"),
-        ("word", "newmtl a\nNs shiny\n", "line 2: `Ns`: `shiny` is not a number"),
+        (
+            "word",
+            "newmtl a\nNs shiny\n",
+            "line 2: `Ns`: `shiny` is not a number",
+        ),
         ("nan", "newmtl a\nKs 1 nan 1\n", "line 2: `Ks`: NaN is not finite"),
-        ("spectral", "newmtl a\nKd spectral red.rfl\n", "line 2: `Kd spectral`"),
-        ("illum", "newmtl a\nillum 12\n", "line 2: illum must be an integer from 0 to 10"),
-        ("nofile", "newmtl a\nmap_Kd -s 2 2\n", "line 2: `map_Kd` names no image file"),
-        ("option", "newmtl a\nmap_Kd -zoom 2 a.png\n", "line 2: `map_Kd`: unknown option `-zoom`"),
+        (
+            "spectral",
+            "newmtl a\nKd spectral red.rfl\n",
+            "line 2: `Kd spectral`",
+        ),
+        (
+            "illum",
+            "newmtl a\nillum 12\n",
+            "line 2: illum must be an integer from 0 to 10",
+        ),
+        (
+            "nofile",
+            "newmtl a\nmap_Kd -s 2 2\n",
+            "line 2: `map_Kd` names no image file",
+        ),
+        (
+            "option",
+            "newmtl a\nmap_Kd -zoom 2 a.png\n",
+            "line 2: `map_Kd`: unknown option `-zoom`",
+        ),
     ] {
         let message = error(name, text.as_bytes());
         assert!(message.contains(words), "{name}: {message}");
     }
     for (name, text, words) in [
-        ("binary", &b"newmtl a\nKd \xff\xfe\n"[..], "line 2: cannot be read as text"),
+        (
+            "binary",
+            &b"newmtl a\nKd \xff\xfe\n"[..],
+            "line 2: cannot be read as text",
+        ),
         ("long", vec![b'#'; 2 << 20].as_slice(), "line 1 is longer than"),
     ] {
         let message = error(name, text);
         assert!(message.contains(words), "{name}: {message}");
     }
     let missing = read(Path::new("/no/such/file.mtl")).unwrap_err().to_string();
-    assert!(missing.contains("/no/such/file.mtl") && missing.contains("cannot open"), "{missing}");
+    assert!(
+        missing.contains("/no/such/file.mtl") && missing.contains("cannot open"),
+        "{missing}"
+    );
 }

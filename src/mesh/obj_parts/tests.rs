@@ -29,7 +29,9 @@ fn faces_go_to_the_part_of_their_material() {
     let read = load_parts(&dir.join("m.obj")).unwrap();
     let names: Vec<&str> = read.parts.iter().map(|p| p.material.name.as_str()).collect();
     assert_eq!(names, ["red", "blue"]);
-    let [red, blue] = &read.parts[..] else { unreachable!() };
+    let [red, blue] = &read.parts[..] else {
+        unreachable!()
+    };
     // The red quad's fan, then (the degenerate face skipped) the last triangle.
     let v = |i: u32, p: &ObjPart| p.mesh.positions[i as usize].to_f64();
     let red_tris: Vec<[[f64; 3]; 3]> = red.mesh.triangles.iter().map(|t| t.map(|i| v(i, red))).collect();
@@ -45,7 +47,10 @@ fn faces_go_to_the_part_of_their_material() {
     // per object and material run, so the red quad's and the red triangle's are apart.
     assert_eq!((red.mesh.positions.len(), blue.mesh.positions.len()), (7, 4));
     assert_eq!(blue.mesh.triangles, [[0, 1, 2], [0, 2, 3]]);
-    assert_eq!((red.mesh.skipped_degenerate, blue.mesh.skipped_degenerate), (1, 0));
+    assert_eq!(
+        (red.mesh.skipped_degenerate, blue.mesh.skipped_degenerate),
+        (1, 0)
+    );
     assert_eq!(read.libraries.len(), 1);
     assert_eq!(read.libraries[0].materials.len(), 3);
     assert_eq!(usemtl_names(&dir.join("m.obj")).unwrap(), ["red", "blue"]);
@@ -59,10 +64,16 @@ fn normals_and_texture_coordinates_follow_their_vertices() {
     let dir = folder("attributes", &[("lib.mtl", LIB), ("m.obj", obj)]);
     let read = load_parts(&dir.join("m.obj")).unwrap();
     let blue = &read.parts[0].mesh;
-    assert_eq!(blue.uvs.as_deref(), Some(&[[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]][..]));
+    assert_eq!(
+        blue.uvs.as_deref(),
+        Some(&[[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]][..])
+    );
     assert_eq!(blue.normals.as_ref().map(Vec::len), Some(3));
     let red = &read.parts[1].mesh;
-    assert_eq!(red.uvs.as_deref(), Some(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]][..]));
+    assert_eq!(
+        red.uvs.as_deref(),
+        Some(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]][..])
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -72,12 +83,21 @@ fn material_mistakes_are_named_at_their_line() {
     for (name, files, words) in [
         (
             "bare",
-            vec![("lib.mtl", LIB), ("m.obj", "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n")],
+            vec![
+                ("lib.mtl", LIB),
+                ("m.obj", "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n"),
+            ],
             "line 5: face 1 comes before any `usemtl`",
         ),
         (
             "unknown",
-            vec![("lib.mtl", LIB), ("m.obj", "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl green\nf 1 2 3\n")],
+            vec![
+                ("lib.mtl", LIB),
+                (
+                    "m.obj",
+                    "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl green\nf 1 2 3\n",
+                ),
+            ],
             "line 5: `usemtl green`: no such material: its libraries define `red`, `blue`, `unused`",
         ),
         (
@@ -87,7 +107,10 @@ fn material_mistakes_are_named_at_their_line() {
         ),
         (
             "missing",
-            vec![("m.obj", "\nmtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\n")],
+            vec![(
+                "m.obj",
+                "\nmtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\n",
+            )],
             "line 2: `mtllib gone.mtl`:",
         ),
         (
@@ -95,7 +118,10 @@ fn material_mistakes_are_named_at_their_line() {
             vec![
                 ("a.mtl", "newmtl red\n"),
                 ("b.mtl", "\nnewmtl red\n"),
-                ("m.obj", "mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\n"),
+                (
+                    "m.obj",
+                    "mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl red\nf 1 2 3\n",
+                ),
             ],
             "line 1: material `red` is defined in",
         ),
@@ -117,9 +143,14 @@ fn material_mistakes_are_named_at_their_line() {
         }
     }
     // A malformed library is named by its own file and line.
-    let dir = folder("badlib", &[("lib.mtl", "newmtl red\nKd red\n"), ("m.obj", &format!("mtllib lib.mtl\n{quad}usemtl red\nf 1 2 3\n"))]);
+    let dir = folder(
+        "badlib",
+        &[
+            ("lib.mtl", "newmtl red\nKd red\n"),
+            ("m.obj", &format!("mtllib lib.mtl\n{quad}usemtl red\nf 1 2 3\n")),
+        ],
+    );
     let message = load_parts(&dir.join("m.obj")).unwrap_err().to_string();
     std::fs::remove_dir_all(&dir).unwrap();
     assert!(message.contains("lib.mtl: line 2: `Kd`"), "{message}");
 }
-

@@ -86,8 +86,14 @@ fn kd_and_ks_are_a_rough_plastic_with_alpha_from_ns() {
     assert_eq!(p.distribution, DistributionSpec::Beckmann);
     assert_eq!(p.diffuse_reflectance, TextureRef::Color([0.6, 0.1, 0.1]));
     assert_eq!(p.specular_reflectance, Some(TextureRef::Color([0.5; 3])));
-    assert_eq!((alpha_of_exponent(0.0), alpha_of_exponent(1000.0)), (1.0, (2.0f64 / 1002.0).sqrt()));
-    let no_ns = MtlMaterial { ns: None, ..m.clone() };
+    assert_eq!(
+        (alpha_of_exponent(0.0), alpha_of_exponent(1000.0)),
+        (1.0, (2.0f64 / 1002.0).sqrt())
+    );
+    let no_ns = MtlMaterial {
+        ns: None,
+        ..m.clone()
+    };
     let MaterialSpec::RoughPlastic(p) = front(map(&no_ns).unwrap().spec) else {
         panic!()
     };
@@ -154,7 +160,10 @@ fn ke_is_an_emitter_and_reflection_without_diffuse_a_metal() {
         ke: color([0.0; 3], 3),
         ..material()
     };
-    assert!(matches!(map(&dark).unwrap().spec, MaterialSpec::Lambertian { .. }));
+    assert!(matches!(
+        map(&dark).unwrap().spec,
+        MaterialSpec::Lambertian { .. }
+    ));
     let chrome = MtlMaterial {
         kd: color([0.0; 3], 2),
         ks: color([0.9; 3], 3),
@@ -173,5 +182,8 @@ fn ke_is_an_emitter_and_reflection_without_diffuse_a_metal() {
         kd: color([0.3; 3], 2),
         ..chrome
     };
-    assert!(matches!(front(map(&coloured).unwrap().spec), MaterialSpec::RoughPlastic(_)));
+    assert!(matches!(
+        front(map(&coloured).unwrap().spec),
+        MaterialSpec::RoughPlastic(_)
+    ));
 }

@@ -52,7 +52,11 @@ fn coordinates_are_mitsubas<F: Float>() {
         assert!((h.uv[0] - lit(rho)).abs() <= tol, "{}: {:?}", F::NAME, h.uv);
         assert!((h.uv[1] - lit(v_want)).abs() <= tol, "{}: {:?}", F::NAME, h.uv);
         let radial = (h.point - d.center()).normalize() * lit::<F>(2.0);
-        assert!((h.dpdu - radial).abs().max_element() <= tol * lit(4.0), "{}", F::NAME);
+        assert!(
+            (h.dpdu - radial).abs().max_element() <= tol * lit(4.0),
+            "{}",
+            F::NAME
+        );
     }
     let centre = d.hit(&down(1.0, 0.0), F::infinity()).unwrap();
     assert_eq!((centre.uv, centre.dpdu), ([F::zero(); 2], v(2.0, 0.0, 0.0)));
@@ -71,7 +75,11 @@ fn an_affine_map_makes_an_ellipse<F: Float>() {
     assert!(d.hit(&down(0.0, 1.0), F::infinity()).is_none(), "{}", F::NAME);
     assert!(d.hit(&down(0.0, 0.9), F::infinity()).is_some(), "{}", F::NAME);
     let area = d.area().unwrap().to_f64();
-    assert!((area - 3.0 * std::f64::consts::PI).abs() < 1e-5, "{}: {area}", F::NAME);
+    assert!(
+        (area - 3.0 * std::f64::consts::PI).abs() < 1e-5,
+        "{}: {area}",
+        F::NAME
+    );
     // Extents √(3² + 1²) along x, 1 along y, 0 along z.
     let b = d.bounds().unwrap();
     let [lo, hi] = b.corners().map(|c| c.to_f64());
@@ -124,7 +132,10 @@ fn refuses_bad_input<F: Float>() {
         Some(Field::DiskCenter)
     );
     let x = v::<F>(1.0, 0.0, 0.0);
-    assert_eq!(field(Disk::with_axes(o, x, x * lit::<F>(2.0))), Some(Field::DiskAxes));
+    assert_eq!(
+        field(Disk::with_axes(o, x, x * lit::<F>(2.0))),
+        Some(Field::DiskAxes)
+    );
     assert_eq!(field(Disk::with_axes(o, x, o)), Some(Field::DiskAxes));
     assert_eq!(
         field(Disk::with_axes(o, x, v(0.0, F::infinity().to_f64(), 0.0))),
