@@ -44,7 +44,7 @@ impl<F: Float> Layout<F> for ShapeKind<F> {
             Self::Sphere(s) => s.primitive(part),
             Self::Plane(p) => p.primitive(part),
             Self::Triangle(t) => t.primitive(part),
-            Self::Disk(d) => d.primitive(part),
+            Self::Disk(d) => Disk::primitive(d, part),
             Self::Mesh(m) => m.primitive(part),
             // Tested whole, through its own BVH.
             Self::Instance(_) => Primitive::Other,

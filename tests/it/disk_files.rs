@@ -24,9 +24,9 @@ fn disks(objects: &[&str]) -> Result<Vec<Disk<f64>>, Error> {
         .scene
         .objects()
         .iter()
-        .map(|o| match o.shape {
-            ShapeKind::Disk(d) => d,
-            ref other => panic!("{other:?}"),
+        .map(|o| match &o.shape {
+            ShapeKind::Disk(d) => **d,
+            other => panic!("{other:?}"),
         })
         .collect())
 }
@@ -139,9 +139,10 @@ fn lamp(flip: bool) -> (ObjectSpec, Disk<f64>, f64) {
     let spec = imported.file.objects[0].clone();
     let built = imported.file.build::<f64>().unwrap();
     assert_eq!((built.summary.disks, built.summary.sampled_emitters), (1, 1));
-    let ShapeKind::Disk(disk) = built.scene.objects()[0].shape else {
+    let ShapeKind::Disk(disk) = &built.scene.objects()[0].shape else {
         panic!("{:?}", built.scene.objects()[0].shape)
     };
+    let disk = **disk;
     let image = raytrace::render(&built.scene, &built.camera, &built.settings)
         .unwrap()
         .image;
