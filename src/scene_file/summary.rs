@@ -35,8 +35,9 @@ pub struct Summary {
     pub bounds: Option<Aabb<f64>>,
     /// Whether the scene intersects through a BVH.
     pub uses_bvh: bool,
-    /// What was read but has no effect, each naming its file and line: the keys of an OBJ
-    /// file's `.mtl` materials this renderer has no counterpart for.
+    /// What was read but has no effect, each naming its file and line: the keys and image
+    /// options of an OBJ file's `.mtl` materials that are not read or that their mapping
+    /// leaves unused, and a height map given as `map_Bump`.
     pub notes: Vec<String>,
 }
 

@@ -206,3 +206,24 @@ fn a_bvh_of_disks_renders_the_loops_bytes() {
     let centre = bvh.pixel(32, 16);
     assert!(bvh.pixels().iter().any(|p| *p != centre));
 }
+
+/// A disk object written back as TOML reads back the same, by its numbers or its matrix.
+#[test]
+fn disk_objects_round_trip_through_toml() {
+    let text = format!(
+        "{MATTE}[[objects]]\ntype = \"disk\"\ncenter = [0.1, 0.2, -3]\nnormal = [0, 1, 1]\nradius = 0.3\n\
+         material = \"m\"\n\n[[objects]]\ntype = \"disk\"\nmatrix = [[0.5, 0, 0, 1], [0, 0, -1, 2], [0, 0.25, 0, 3]]\n\
+         material = \"m\"\n"
+    );
+    let file = SceneFile::parse(&text, Path::new("a.toml")).unwrap();
+    let again = SceneFile::parse(&file.to_toml(), Path::new("a.toml")).unwrap();
+    assert_eq!(again.objects, file.objects);
+    assert!(matches!(
+        file.objects[1],
+        ObjectSpec::Disk {
+            matrix: Some(_),
+            radius: 1.0,
+            ..
+        }
+    ));
+}
