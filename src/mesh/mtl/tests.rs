@@ -3,17 +3,25 @@
 
 use super::*;
 
-/// `text` written as `NAME.mtl` in a folder of this process.
+/// `text` written as `NAME.mtl` in a folder of this process and test, `NAME`.
 fn file(name: &str, text: impl AsRef<[u8]>) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("raytrace-mtl-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("raytrace-mtl-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(format!("{name}.mtl"));
     std::fs::write(&path, text).unwrap();
     path
 }
 
+/// Removes the folder `file` made for `path`.
+fn clean(path: &Path) {
+    std::fs::remove_dir_all(path.parent().unwrap()).unwrap();
+}
+
 fn error(name: &str, text: &[u8]) -> String {
-    match read(&file(name, text)) {
+    let path = file(name, text);
+    let got = read(&path);
+    clean(&path);
+    match got {
         Err(Error::Mesh { message, .. }) => message,
         other => panic!("{name}: {other:?}"),
     }
@@ -28,6 +36,7 @@ fn keys_are_read_with_their_lines() {
          map_Bump -bm 0.5 bump.png\nnorm normals.png\n",
     );
     let lib = read(&path).unwrap();
+    clean(&path);
     let [red, glass] = &lib.materials[..] else {
         panic!("{lib:?}")
     };
