@@ -60,7 +60,13 @@ mod tests {
     #[test]
     fn arrays_become_a_mesh_with_its_attributes() {
         let uvs = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
-        let mesh = from_arrays(quad(), None, Some(uvs.clone()), [[0, 1, 2], [0, 2, 2]].into_iter()).unwrap();
+        let mesh = from_arrays(
+            quad(),
+            None,
+            Some(uvs.clone()),
+            [[0, 1, 2], [0, 2, 2]].into_iter(),
+        )
+        .unwrap();
         assert_eq!(mesh.triangles, vec![[0, 1, 2]]);
         assert_eq!(mesh.skipped_degenerate, 1);
         assert_eq!(mesh.uvs, Some(uvs));
@@ -68,7 +74,12 @@ mod tests {
 
     #[test]
     fn bad_arrays_are_named() {
-        let e = from_arrays(quad(), Some(vec![Vec3::new(0.0, 0.0, 1.0)]), None, [[0, 1, 2]].into_iter());
+        let e = from_arrays(
+            quad(),
+            Some(vec![Vec3::new(0.0, 0.0, 1.0)]),
+            None,
+            [[0, 1, 2]].into_iter(),
+        );
         assert_eq!(e.unwrap_err(), "1 normals for 4 vertices: one per vertex");
         let e = from_arrays(quad(), None, None, [[0, 1, 4]].into_iter());
         assert!(e.unwrap_err().contains("face 0: vertex index 4 out of range"));
