@@ -2,7 +2,8 @@
 //!
 //! - The camera is the first perspective camera met walking the scene's nodes: at its
 //!   node's origin, looking down the node's `−z` with `+y` up, `yfov` its vertical field
-//!   of view and `aspectRatio` (4:3 if unset) its image's width over height. `znear` and
+//!   of view and `aspectRatio` (4:3 if unset; the ratio of small integers it rounds from
+//!   as f32, if any) its image's width over height. `znear` and
 //!   `zfar` are not read (a path tracer clips nothing).
 //! - With none, a camera frames the scene: it looks down `−z` at the centre of the box
 //!   around every placed vertex, from the distance `r / sin(20°)` at which the box's
@@ -42,6 +43,16 @@ fn vector(m: &Rows, v: [f64; 3]) -> [f64; 3] {
     m.map(|r| r[0] * v[0] + r[1] * v[1] + r[2] * v[2])
 }
 
+/// `a`, an aspect ratio read as `f32`, as the ratio `p/q` of small integers (`q ≤ 64`)
+/// it rounds from, if one is within `f32`'s rounding (`2⁻²³` relative): `4/3` is stored
+/// as `1.3333334`, which would make an 800-pixel-wide image 599 rows high.
+fn snapped(a: f64) -> f64 {
+    (1..=64u32)
+        .map(|q| (f64::from(q) * a).round() / f64::from(q))
+        .find(|r| *r > 0.0 && ((r - a) / a).abs() <= f64::from(f32::EPSILON))
+        .unwrap_or(a)
+}
+
 impl Importer<'_> {
     /// The camera of node `at` (placed by `world`), if it is a perspective one; an
     /// orthographic one is a warning, and the scene is framed instead.
@@ -62,7 +73,7 @@ impl Importer<'_> {
             ));
         }
         let aspect = match p.aspect_ratio().map(f64::from) {
-            Some(a) if a > 0.0 && a.is_finite() => a,
+            Some(a) if a > 0.0 && a.is_finite() => snapped(a),
             Some(a) => {
                 return Err(self.error(
                     format!("{owner}.perspective.aspectRatio"),
@@ -201,5 +212,22 @@ impl Importer<'_> {
                 light: false,
             }
         };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::snapped;
+
+    #[test]
+    fn an_f32_aspect_ratio_is_read_as_the_ratio_it_rounds_from() {
+        for (p, q) in [(4.0, 3.0), (16.0, 9.0), (3.0, 2.0), (1.0, 1.0), (21.0, 9.0)] {
+            let stored = f64::from((p / q) as f32);
+            assert_eq!(snapped(stored), p / q, "{p}/{q}");
+            assert_eq!((800.0 / snapped(stored)).floor(), (800.0 * q / p).floor());
+        }
+        // A ratio of no small integers stays as it is.
+        let odd = f64::from(1.2345678f32);
+        assert_eq!(snapped(odd), odd);
     }
 }
