@@ -18,6 +18,7 @@ mod geometry;
 mod images;
 mod material;
 mod nodes;
+mod transmission;
 mod uri;
 mod view;
 

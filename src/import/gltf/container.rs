@@ -147,6 +147,26 @@ fn split_glb(
 /// importer itself, which reads some the crate does not.
 fn validate(path: &Path, root: &json::Root) -> Result<()> {
     use json::validation::Validate;
+    // The crate's check of a primitive's POSITION reads the accessor before its index is
+    // checked (and panics past the end): checked here first.
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            let position = json::validation::Checked::Valid(json::mesh::Semantic::Positions);
+            if let Some(a) = primitive.attributes.get(&position)
+                && a.value() >= root.accessors.len()
+            {
+                return Err(error(
+                    path,
+                    format!("meshes[{m}].primitives[{p}].attributes.POSITION"),
+                    format!(
+                        "invalid glTF: accessor {} does not exist (the file has {})",
+                        a.value(),
+                        root.accessors.len()
+                    ),
+                ));
+            }
+        }
+    }
     let mut errors = Vec::new();
     root.validate(root, json::Path::new, &mut |at, e| {
         let at = at().to_string();

@@ -25,12 +25,12 @@ use super::images::{Derive, mean};
 use crate::error::Result;
 use crate::scene_file::{
     ConductorSpec, DistributionSpec, IorSpec, MaterialSpec, PlasticSpec, RoughConductorSpec,
-    RoughDielectricSpec, RoughPlasticSpec, ScalarRef, TextureRef, ThinDielectricSpec, TwoSidedSpec,
+    RoughPlasticSpec, ScalarRef, TextureRef, TwoSidedSpec,
 };
 use ::gltf::material::AlphaMode;
 
 /// A material's roughness as the BSDFs take it.
-enum Alpha {
+pub(super) enum Alpha {
     /// One `α` everywhere.
     Constant(f64),
     /// An `α` image, and its mean.
@@ -39,7 +39,7 @@ enum Alpha {
 
 impl Alpha {
     /// Whether it is `0` everywhere: a smooth surface.
-    fn is_zero(&self) -> bool {
+    pub(super) fn is_zero(&self) -> bool {
         matches!(self, Self::Constant(a) if *a == 0.0)
     }
 }
@@ -331,73 +331,6 @@ impl Importer<'_> {
             }
         }
         Ok((radiance != [0.0; 3]).then_some(radiance))
-    }
-
-    /// A transmitting material: thin-walled without `KHR_materials_volume`.
-    fn dielectric(
-        &mut self,
-        m: &::gltf::Material,
-        owner: &str,
-        (base, base_mean): (TextureRef, [f64; 3]),
-        alpha: Alpha,
-        ior: f64,
-    ) -> Result<(MaterialSpec, String)> {
-        let value = IorSpec::Value;
-        let volume = m.volume().is_some_and(|v| v.thickness_factor() > 0.0);
-        if !volume {
-            if !alpha.is_zero() {
-                self.warn(
-                    owner,
-                    "a thin transmitting wall is rendered smooth (its roughness is left out)".into(),
-                );
-            }
-            let spec = ThinDielectricSpec {
-                int_ior: value(ior),
-                ext_ior: value(1.0),
-                specular_reflectance: None,
-                specular_transmittance: Some(base),
-            };
-            return Ok((
-                MaterialSpec::ThinDielectric(spec),
-                format!("thin dielectric, index {ior}"),
-            ));
-        }
-        Ok(match alpha {
-            alpha if alpha.is_zero() => {
-                if !matches!(base, TextureRef::Color(_)) {
-                    self.warn(
-                        owner,
-                        "a smooth dielectric's tint is one colour: its base colour image is averaged".into(),
-                    );
-                }
-                let spec = MaterialSpec::Dielectric {
-                    index: ior,
-                    albedo: Some(base_mean),
-                    fresnel: crate::scene_file::FresnelSpec::Exact,
-                };
-                (spec, format!("dielectric, index {ior}"))
-            }
-            alpha => {
-                let a = match alpha {
-                    Alpha::Constant(a) => ScalarRef::from(a),
-                    Alpha::Texture(t, _) => ScalarRef(t),
-                };
-                let spec = RoughDielectricSpec {
-                    int_ior: value(ior),
-                    ext_ior: value(1.0),
-                    specular_reflectance: None,
-                    specular_transmittance: Some(base),
-                    distribution: DistributionSpec::Ggx,
-                    alpha: Some(a),
-                    alpha_u: None,
-                    alpha_v: None,
-                };
-                (
-                    MaterialSpec::RoughDielectric(spec),
-                    format!("rough dielectric (GGX), index {ior}"),
-                )
-            }
-        })
     }
 }
 

@@ -100,3 +100,47 @@ fn check_lists_what_was_read_and_render_writes_the_image() {
     );
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+#[test]
+fn tiles_of_a_gltf_scene_carry_the_hash_of_its_buffer_file() {
+    let dir = folder("cli_tiles");
+    let gltf = model().save_gltf(&dir, "model");
+    let tile = |k: u32| {
+        let out = dir.join(format!("t{k}.rtile"));
+        let (code, text) = run(&[
+            "render",
+            gltf.to_str().unwrap(),
+            "--width",
+            "8",
+            "--tile",
+            &format!("{k}/2"),
+            "--quiet",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(code, Some(0), "{text}");
+        out
+    };
+    let merge = |a: &std::path::Path, b: &std::path::Path| {
+        let out = dir.join("merged.png");
+        run(&[
+            "merge",
+            a.to_str().unwrap(),
+            b.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    let (one, two) = (tile(1), tile(2));
+    assert_eq!(merge(&one, &two).0, Some(0));
+    // The same glTF file over other buffer bytes (the square moved): the tiles do not merge.
+    let bin = dir.join("model.bin");
+    let mut bytes = std::fs::read(&bin).unwrap();
+    bytes[8..12].copy_from_slice(&0.5f32.to_le_bytes());
+    std::fs::write(&bin, bytes).unwrap();
+    let two = tile(2);
+    let (code, text) = merge(&one, &two);
+    assert_ne!(code, Some(0));
+    assert!(text.contains("of scene"), "{text}");
+    std::fs::remove_dir_all(dir).unwrap();
+}

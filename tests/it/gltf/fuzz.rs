@@ -65,6 +65,24 @@ fn edited(bytes: &[u8], edits: &[(usize, u8)], keep: f64) -> Vec<u8> {
     out
 }
 
+/// The JSON pointer of every number in `v`, under `at`.
+fn pointers(v: &serde_json::Value, at: String, out: &mut Vec<String>) {
+    match v {
+        serde_json::Value::Number(_) => out.push(at),
+        serde_json::Value::Array(a) => {
+            for (k, x) in a.iter().enumerate() {
+                pointers(x, format!("{at}/{k}"), out);
+            }
+        }
+        serde_json::Value::Object(o) => {
+            for (k, x) in o {
+                pointers(x, format!("{at}/{k}"), out);
+            }
+        }
+        _ => {}
+    }
+}
+
 #[test]
 fn the_asset_the_edits_start_from_is_read() {
     let dir = folder("fuzz_base");
@@ -98,6 +116,30 @@ proptest! {
             std::fs::write(dir.join(name), &bytes).unwrap();
             read_and_build(&dir.join(name));
         }
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+
+    #[test]
+    fn numbers_of_a_real_file_changed_are_refused_or_read_without_panicking(
+        edits in proptest::collection::vec((any::<usize>(), prop_oneof![
+            Just(json!(0)), Just(json!(1)), Just(json!(2)), Just(json!(3)), Just(json!(-1)),
+            Just(json!(4_294_967_295u64)), Just(json!(1e30)), Just(json!(0.5)), Just(json!(-0.0)),
+            Just(json!(5126)), Just(json!(5121)), Just(json!(5123)), (0..64u32).prop_map(|n| json!(n)),
+        ]), 1..5),
+        binary in any::<bool>(),
+    ) {
+        // Indices, counts, offsets, strides, factors and transforms are all numbers: each
+        // edit sets one of them, so the file stays JSON and often valid glTF.
+        let dir = folder("fuzz_numbers");
+        let mut g = asset();
+        let mut numbers = Vec::new();
+        pointers(&g.json, String::new(), &mut numbers);
+        for (k, value) in edits {
+            let at = &numbers[k % numbers.len()];
+            *g.json.pointer_mut(at).unwrap() = value;
+        }
+        let path = if binary { g.save_glb(&dir, "n") } else { g.save_embedded(&dir, "n") };
+        read_and_build(&path);
         std::fs::remove_dir_all(dir).unwrap();
     }
 
