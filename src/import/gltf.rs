@@ -22,6 +22,7 @@ mod transmission;
 mod uri;
 mod view;
 
+pub use convert::MAX_COPIED_TRIANGLES;
 pub use view::{DEFAULT_ASPECT, DEFAULT_VFOV, LUMENS_PER_WATT};
 
 use super::Imported;

@@ -37,7 +37,19 @@ pub(super) struct Importer<'g> {
     pub(super) bounds: Option<Aabb<f64>>,
     /// Whether any object gives off light.
     pub(super) emitters: bool,
+    /// Triangles of meshes placed as objects of their own, counted toward
+    /// [`MAX_COPIED_TRIANGLES`].
+    copied: usize,
+    /// The primitives shared because copies would pass the bound (warned about once).
+    bounded: BTreeSet<(usize, usize, bool)>,
+    /// Each primitive's box in its own space, for the bounds.
+    boxes: BTreeMap<String, Aabb<f64>>,
 }
+
+/// The most triangles placed as mesh objects of their own (2²⁶, some 67 million, several
+/// GiB once built): past it, a mesh placed by several nodes is shared as instances even
+/// where that shades differently, with a warning.
+pub const MAX_COPIED_TRIANGLES: usize = 1 << 26;
 
 impl<'g> Importer<'g> {
     pub(super) fn new(g: &'g Opened) -> Self {
@@ -59,6 +71,9 @@ impl<'g> Importer<'g> {
             primitives: BTreeMap::new(),
             bounds: None,
             emitters: false,
+            copied: 0,
+            bounded: BTreeSet::new(),
+            boxes: BTreeMap::new(),
         }
     }
 
@@ -180,7 +195,26 @@ impl<'g> Importer<'g> {
             if self.assets.mesh(&name).is_some_and(|m| !m.triangles.is_empty()) {
                 self.grow_bounds(&name, &p.world);
             }
-            let shared = uses > 1 && flat && self.plain_materials.contains(&material);
+            let lossless = flat && self.plain_materials.contains(&material);
+            let triangles = self.assets.mesh(&name).map_or(0, |m| m.triangles.len());
+            // Copies past the bound are shared anyway: a file of a few bytes may place a
+            // large mesh a hundred thousand times.
+            let over = uses > 1 && !lossless && self.copied + triangles > MAX_COPIED_TRIANGLES;
+            if over && !self.bounded.contains(&key) {
+                self.bounded.insert(key);
+                self.warn(
+                    &format!("meshes[{}].primitives[{}]", key.0, key.1),
+                    format!(
+                        "placed {uses} times, past {MAX_COPIED_TRIANGLES} copied triangles: shared as instances, \
+                         which shade with their faces' normals, read no texture coordinates and are not \
+                         sampled as lights"
+                    ),
+                );
+            }
+            let shared = uses > 1 && (lossless || over);
+            if !shared {
+                self.copied += triangles;
+            }
             let matrix = (p.world != nodes::IDENTITY).then_some(p.world);
             let object = if shared {
                 self.file
@@ -295,17 +329,33 @@ impl<'g> Importer<'g> {
         Ok(made)
     }
 
-    /// Grows the bounds by the vertices of the mesh held as `name`, placed by `world`.
+    /// Grows the bounds by the corners of the box around the mesh held as `name`, placed
+    /// by `world` (the box is made once per mesh: a mesh placed many times costs eight
+    /// points a placement).
     fn grow_bounds(&mut self, name: &str, world: &Rows) {
-        let Some(mesh) = self.assets.mesh(name) else {
-            return;
-        };
-        let mut b = self.bounds.unwrap_or_else(Aabb::empty);
-        for p in &mesh.positions {
-            let q = world.map(|r| r[0] * p.x + r[1] * p.y + r[2] * p.z + r[3]);
-            let q = Vec3::new(q[0], q[1], q[2]);
-            b = b.union(Aabb::new(q, q));
+        if !self.boxes.contains_key(name) {
+            let Some(mesh) = self.assets.mesh(name) else {
+                return;
+            };
+            let b = mesh
+                .positions
+                .iter()
+                .fold(Aabb::empty(), |b, &p| b.union(Aabb::new(p, p)));
+            self.boxes.insert(name.to_string(), b);
         }
-        self.bounds = Some(b);
+        let b = self.boxes[name];
+        let mut all = self.bounds.unwrap_or_else(Aabb::empty);
+        for k in 0..8 {
+            let pick = |bit: usize, lo: f64, hi: f64| if k >> bit & 1 == 0 { lo } else { hi };
+            let c = [
+                pick(0, b.min.x, b.max.x),
+                pick(1, b.min.y, b.max.y),
+                pick(2, b.min.z, b.max.z),
+            ];
+            let q = world.map(|r| r[0] * c[0] + r[1] * c[1] + r[2] * c[2] + r[3]);
+            let q = Vec3::new(q[0], q[1], q[2]);
+            all = all.union(Aabb::new(q, q));
+        }
+        self.bounds = Some(all);
     }
 }

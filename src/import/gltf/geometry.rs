@@ -83,7 +83,7 @@ fn triangles(mode: Mode, order: &[u32]) -> Result<Vec<[u32; 3]>, String> {
             .map(|i| [order[i + 1], order[i + 2], order[0]])
             .collect(),
         _ => {
-            if n % 3 != 0 {
+            if !n.is_multiple_of(3) {
                 return Err(format!(
                     "{n} vertices in the index order of a TRIANGLES primitive: a multiple of 3 is needed"
                 ));

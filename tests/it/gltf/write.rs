@@ -57,7 +57,7 @@ impl Gltf {
 
     /// A buffer view over `bytes`, appended to the buffer at a multiple of 4.
     pub fn view(&mut self, bytes: &[u8]) -> usize {
-        while self.bin.len() % 4 != 0 {
+        while !self.bin.len().is_multiple_of(4) {
             self.bin.push(0);
         }
         let offset = self.bin.len();
@@ -206,11 +206,11 @@ impl Gltf {
     /// spaces, the binary chunk padded with zeros.
     pub fn glb(&self) -> Vec<u8> {
         let mut json = self.json_text(None).into_bytes();
-        while json.len() % 4 != 0 {
+        while !json.len().is_multiple_of(4) {
             json.push(b' ');
         }
         let mut bin = self.bin.clone();
-        while bin.len() % 4 != 0 {
+        while !bin.len().is_multiple_of(4) {
             bin.push(0);
         }
         let total = 12 + 8 + json.len() + if bin.is_empty() { 0 } else { 8 + bin.len() };
