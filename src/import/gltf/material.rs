@@ -57,10 +57,10 @@ impl Importer<'_> {
         };
         let name = match (m.index(), m.name()) {
             (None, _) => "glTF default".to_string(),
-            (Some(i), Some(n)) if self.file.materials.contains_key(n) || n.is_empty() => format!("{n} ({i})"),
-            (Some(_), Some(n)) => n.to_string(),
-            (Some(i), None) => format!("material {i}"),
+            (Some(_), Some(n)) if !n.is_empty() => n.to_string(),
+            (Some(i), _) => format!("material {i}"),
         };
+        let name = self.unused(name, m.index());
         let (spec, what) = self.surface(m, &owner)?;
         let uv_free = spec.textures().iter().all(|t| matches!(t, TextureRef::Color(_)));
         let emits = matches!(spec, MaterialSpec::Emissive { .. });
@@ -89,7 +89,7 @@ impl Importer<'_> {
         };
         let top = match normal {
             Some(map) => {
-                let surface = format!("{name} (surface)");
+                let surface = self.unused(format!("{name} (surface)"), m.index());
                 self.file.materials.insert(surface.clone(), spec);
                 wrap(MaterialSpec::NormalMap {
                     normal_map: map,
@@ -123,26 +123,40 @@ impl Importer<'_> {
         Ok(name)
     }
 
+    /// `name`, or (if a material has it already: two glTF materials of one name) it with
+    /// the glTF material's index, and then a count, after it.
+    fn unused(&self, name: String, index: Option<usize>) -> String {
+        let taken = |n: &String| self.file.materials.contains_key(n);
+        if !taken(&name) {
+            return name;
+        }
+        let tag = index.map_or(String::from("default"), |i| i.to_string());
+        (1..)
+            .map(|k| {
+                if k == 1 {
+                    format!("{name} ({tag})")
+                } else {
+                    format!("{name} ({tag}, {k})")
+                }
+            })
+            .find(|n| !taken(n))
+            .unwrap_or(name)
+    }
+
     /// The BSDF of `m` (without its normal map and sides) and what it was mapped to.
     fn surface(&mut self, m: &::gltf::Material, owner: &str) -> Result<(MaterialSpec, String)> {
         let pbr = m.pbr_metallic_roughness();
         let [r, g, b, _] = pbr.base_color_factor().map(f64::from);
         let factor = [r, g, b];
-        let (base, base_mean) = match pbr.base_color_texture() {
+        let base_mean = match pbr.base_color_texture() {
             Some(info) => {
                 let image = info.texture().source().index();
                 let plain = self.images.decoded(image, false, &mut self.assets)?;
                 let mean = mean(&plain);
-                let mean = [0, 1, 2].map(|k| mean[k] * factor[k]);
-                let t = self.texture(&info, Derive::Color(factor), (owner, "baseColorTexture"))?;
-                (t, mean)
+                [0, 1, 2].map(|k| mean[k] * factor[k])
             }
-            None => (TextureRef::Color(factor), factor),
+            None => factor,
         };
-        let (metallic, alpha) = self.metallic_roughness(&pbr, owner)?;
-        let ior = f64::from(m.ior().unwrap_or(1.5));
-        let coat = |x: f64| IorSpec::Value(x);
-
         if let Some(radiance) = self.emission(m, owner)? {
             let albedo = base_mean.map(|c| c.clamp(0.0, 1.0));
             self.warn(
@@ -159,6 +173,13 @@ impl Importer<'_> {
             };
             return Ok((spec, format!("emissive, radiance {radiance:?}")));
         }
+        let base = match pbr.base_color_texture() {
+            Some(info) => self.texture(&info, Derive::Color(factor), (owner, "baseColorTexture"))?,
+            None => TextureRef::Color(factor),
+        };
+        let (metallic, alpha) = self.metallic_roughness(&pbr, owner)?;
+        let ior = f64::from(m.ior().unwrap_or(1.5));
+        let coat = |x: f64| IorSpec::Value(x);
 
         let transmission = match m.transmission() {
             Some(t) => {

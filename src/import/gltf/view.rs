@@ -55,13 +55,15 @@ fn snapped(a: f64) -> f64 {
 
 impl Importer<'_> {
     /// The camera of node `at` (placed by `world`), if it is a perspective one; an
-    /// orthographic one is a warning, and the scene is framed instead.
+    /// orthographic one is a warning, and the walk goes on to the next camera.
     pub(super) fn camera(&mut self, c: &::gltf::Camera, at: &str, world: &Rows) -> Result<bool> {
         let owner = format!("cameras[{}]", c.index());
         let Projection::Perspective(p) = c.projection() else {
             self.warn(
                 &owner,
-                "an orthographic camera is not rendered: the scene is framed instead".into(),
+                "an orthographic camera is not read: the next perspective camera is, else one framing \
+                 the scene"
+                    .into(),
             );
             return Ok(false);
         };
@@ -124,6 +126,12 @@ impl Importer<'_> {
                 &owner,
                 "its range is not read: its light falls off as 1/d² without end".into(),
             );
+        }
+        let aims = !matches!(l.kind(), Kind::Point);
+        let length = direction.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if aims && !(length > 0.0 && length.is_finite()) {
+            self.warn(&owner, format!("its node {at} flattens its direction: left out"));
+            return Ok(());
         }
         let (spec, kind) = match l.kind() {
             Kind::Point => (

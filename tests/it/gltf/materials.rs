@@ -192,3 +192,19 @@ fn the_metallic_roughness_image_gives_alpha_from_green_and_metal_from_blue() {
     f.build::<f64>().unwrap();
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+#[test]
+fn materials_of_one_name_stay_apart() {
+    let named = |n: &str| json!({ "name": n, "pbrMetallicRoughness": { "metallicFactor": 0 } });
+    let unnamed = json!({ "pbrMetallicRoughness": { "metallicFactor": 1 } });
+    let g = scene_of(&[named("material 2"), named("paint"), unnamed, named("paint")]);
+    let dir = folder("names");
+    let imported = import(&g.save_glb(&dir, "n"));
+    let used: Vec<&str> = imported.file.objects.iter().map(|o| o.material()).collect();
+    assert_eq!(used, ["material 2", "paint", "material 2 (2)", "paint (3)"]);
+    assert!(matches!(
+        imported.file.materials["material 2 (2)"],
+        MaterialSpec::RoughConductor(_)
+    ));
+    std::fs::remove_dir_all(dir).unwrap();
+}
