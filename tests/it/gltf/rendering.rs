@@ -257,3 +257,55 @@ intensity = [3.0, 3.0, 3.0]
     );
     std::fs::remove_dir_all(dir).unwrap();
 }
+
+#[test]
+fn without_a_camera_the_scene_is_framed_and_without_lights_the_sky_lights_it() {
+    use raytrace::scene_file::{BackgroundSpec, CameraSpec};
+    let dir = folder("framed");
+    for emits in [true, false] {
+        let mut g = Gltf::new();
+        let m = if emits {
+            emitter(&mut g, [1.0, 1.0, 1.0], 1.0)
+        } else {
+            g.push(
+                "materials",
+                json!({ "pbrMetallicRoughness": { "metallicFactor": 0 } }),
+            )
+        };
+        let mesh = square(&mut g, 1.0, 0.0, m);
+        let quad = g.node(json!({ "mesh": mesh, "translation": [5.0, 1.0, 0.0] }));
+        g.scene(&[quad]);
+        let file = import(&g.save_glb(&dir, "f")).file;
+        // The box around the square: centre (5, 1, 0), half its diagonal √2; seen whole
+        // in 40° from √2 / sin 20° along +z.
+        let CameraSpec::LookAt {
+            from,
+            at,
+            vfov,
+            aspect,
+            ..
+        } = file.camera
+        else {
+            panic!()
+        };
+        let d = 2f64.sqrt() / 20f64.to_radians().sin();
+        assert_eq!(at, [5.0, 1.0, 0.0]);
+        assert!((from[2] - d).abs() < 1e-12 && from[..2] == [5.0, 1.0], "{from:?}");
+        assert_eq!((vfov, aspect), (40.0, 4.0 / 3.0));
+        let lit_by_sky = matches!(file.background, BackgroundSpec::Sky { light: true, .. });
+        assert_eq!(lit_by_sky, !emits, "{:?}", file.background);
+        let image = render(file, 40, 4);
+        assert_eq!((image.width(), image.height()), (40, 30));
+        // The square fills the middle: ±1 of the ±d·tan 20° = ±1.51 the rows span.
+        let centre = image.pixel(20, 15);
+        assert!(
+            centre.iter().all(|&c| c > 0.05),
+            "the square is seen and lit: {centre:?}"
+        );
+        if emits {
+            assert_eq!(centre, [1.0; 3]);
+            assert_eq!(image.pixel(20, 1), [0.0; 3], "above the square, black");
+        }
+    }
+    std::fs::remove_dir_all(dir).unwrap();
+}
