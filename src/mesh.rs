@@ -1,14 +1,17 @@
-//! Triangle meshes from files: Wavefront OBJ and Stanford PLY.
+//! Triangle meshes from files: Wavefront OBJ and Stanford PLY (and, through
+//! [`from_arrays`], from the arrays an importer decoded).
 //!
 //! A mesh is loaded as shared vertex positions and triangles indexing them. Polygons are
 //! split into triangles as fans; faces without area are skipped and counted, so a caller
 //! can report them.
 
+mod arrays;
 mod check;
 mod obj;
 mod ply;
 mod source;
 
+pub use arrays::from_arrays;
 pub use source::{MAX_LINE_BYTES, MAX_MESH_BYTES};
 
 use crate::error::{Error, Result};
