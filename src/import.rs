@@ -1,6 +1,6 @@
-//! Scenes made elsewhere: Mitsuba 3's XML scene format read into a [`SceneFile`], so
-//! that everything a scene file gets (checked values, errors at their place, tiles,
-//! precision advice) holds for it too.
+//! Scenes made elsewhere: Mitsuba 3's XML scene format and glTF 2.0 ([`gltf()`]) read
+//! into a [`SceneFile`], so that everything a scene file gets (checked values, errors at
+//! their place, tiles, precision advice) holds for them too.
 //!
 //! Read: `<default>` and `$name` (and `-D name=value`), `<include>`, `<path>`, `id` and
 //! `<ref>`; transforms (`lookat`, `translate`, `rotate`, `scale`, `matrix`); shapes `obj`,
@@ -21,6 +21,7 @@
 
 mod bsdf;
 mod convert;
+pub mod gltf;
 mod shape;
 mod transform;
 pub mod xml;
@@ -41,6 +42,28 @@ use std::path::Path;
 pub fn mitsuba(path: &Path, defines: &BTreeMap<String, String>) -> Result<Imported> {
     let (plugins, folders) = xml::read(path, defines)?;
     convert::Importer::new(SceneFile::empty(path), folders).run(&plugins)
+}
+
+/// The glTF 2.0 file at `path` (`.gltf` JSON or `.glb` binary, told apart by its first
+/// bytes) as a scene file, its meshes and images held in memory
+/// ([`SceneFile::assets`]); [`Imported::read`] lists what was read, and
+/// [`Imported::warnings`] what renders differently from the file (an extension not read,
+/// a material property averaged, alpha). `docs/SCENE_FORMAT.md` states the mapping.
+///
+/// # Errors
+/// [`Error::SceneFile`](crate::Error::SceneFile) naming the file and the JSON path
+/// (`meshes[0].primitives[1].attributes.POSITION`), or the line and column of malformed
+/// JSON: a truncated or malformed file, an index or accessor out of range, a buffer
+/// shorter than it declares, a missing buffer or image file, a required extension not
+/// read. [`Error::Image`](crate::Error::Image) for an image that cannot be decoded.
+pub fn gltf(path: &Path) -> Result<Imported> {
+    gltf::import(path)
+}
+
+/// Whether `path` names a glTF file (by its extension, `.gltf` or `.glb`).
+pub fn is_gltf(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb"))
 }
 
 /// Whether `path` names a Mitsuba XML scene (by its extension, `.xml`).

@@ -1,6 +1,7 @@
 //! Building a scene file's scene, camera and settings, every value checked on the way.
 
 use super::SceneFile;
+use super::assets::Assets;
 use super::camera::FileCamera;
 use super::check::{blame, checked, vec};
 use super::location::KeyPath;
@@ -15,6 +16,7 @@ use crate::error::{Error, Field, Result};
 use crate::float::Float;
 use crate::image::Tonemap;
 use crate::material::MaterialKind;
+use crate::mesh::MeshData;
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
 use crate::shape::{Instance, Mesh, Prototype, ShapeKind};
@@ -97,7 +99,7 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
             (&root, &at),
             object,
             m,
-            (folder, &prototypes),
+            (folder, file.assets(), &prototypes),
         )?;
     }
     for (i, light) in file.lights.iter().enumerate() {
@@ -192,7 +194,7 @@ fn add_object<F: Float>(
     (root, at): (&KeyPath, &KeyPath),
     spec: &ObjectSpec,
     material: MaterialKind<F>,
-    (folder, prototypes): (&Path, &BTreeMap<&str, Arc<Prototype>>),
+    (folder, assets, prototypes): (&Path, &Assets, &BTreeMap<&str, Arc<Prototype>>),
 ) -> Result<()> {
     let solid = match *spec {
         ObjectSpec::Sphere { center, radius, .. } => Solid::Sphere { center, radius },
@@ -218,7 +220,8 @@ fn add_object<F: Float>(
             let placement = mesh_placement((root, at), scale, rotate, translate, matrix)?;
             let path = folder.join(file);
             let attributes = Attributes::new(&path, face_normals, flip_tex_coords);
-            let shape = mesh::<F>(root, at, &path, &placement, attributes, summary)?;
+            let data = load_mesh(assets, folder, file).map_err(|e| at.key("file").wrap(e))?;
+            let shape = mesh::<F>(root, at, &data, &placement, attributes, summary)?;
             scene.add(shape, material);
             return Ok(());
         }
@@ -279,12 +282,21 @@ fn prototypes<'f>(
     let mut made = BTreeMap::new();
     for (name, def) in &file.meshes {
         let at = root.key("meshes").key(name).key("file");
-        let mesh = crate::mesh::load(&folder.join(&def.file)).map_err(|e| at.wrap(e))?;
+        let mesh = load_mesh(file.assets(), folder, &def.file).map_err(|e| at.wrap(e))?;
         let vertices = mesh.positions.iter().map(|p| p.to_f64()).collect();
-        let prototype = Prototype::new(vertices, mesh.triangles).map_err(|e| at.wrap(e))?;
+        let prototype = Prototype::new(vertices, mesh.triangles.clone()).map_err(|e| at.wrap(e))?;
         made.insert(name.as_str(), Arc::new(prototype));
     }
     Ok(made)
+}
+
+/// The mesh a `file` key names: one held in memory ([`Assets`]), else the mesh file at
+/// that path relative to `folder`.
+fn load_mesh(assets: &Assets, folder: &Path, file: &str) -> Result<Arc<MeshData>> {
+    match assets.mesh(file) {
+        Some(mesh) => Ok(Arc::clone(mesh)),
+        None => crate::mesh::load(&folder.join(file)).map(Arc::new),
+    }
 }
 
 /// An instance's map from its mesh's space to the scene's: scale, rotate about x, then y,
@@ -350,27 +362,13 @@ impl Attributes {
     }
 }
 
-/// The mesh at `path`, placed and rounded to `F`, with the file's normals (placed as
-/// normals are) and texture coordinates as `attributes` say; its skipped faces are
-/// counted in `summary`.
-fn mesh<F: Float>(
+/// The mesh `mesh`, placed and rounded to `F`, with its normals (placed as normals are)
+/// and texture coordinates as `attributes` say; its skipped faces are counted in
+/// `summary`.
+pub(super) fn mesh<F: Float>(
     root: &KeyPath,
     at: &KeyPath,
-    path: &Path,
-    placement: &Placement,
-    attributes: Attributes,
-    summary: &mut Summary,
-) -> Result<Mesh<F>> {
-    let mesh = crate::mesh::load(path).map_err(|e| at.key("file").wrap(e))?;
-    placed(root, at, mesh, placement, attributes, summary)
-}
-
-/// The mesh `mesh` (read from the file of the object at `at`) placed and rounded to `F`,
-/// as [`mesh`] makes it.
-pub(super) fn placed<F: Float>(
-    root: &KeyPath,
-    at: &KeyPath,
-    mesh: crate::mesh::MeshData,
+    mesh: &MeshData,
     placement: &Placement,
     attributes: Attributes,
     summary: &mut Summary,
@@ -390,11 +388,11 @@ pub(super) fn placed<F: Float>(
         vertices.push(v);
     }
     // Placement and rounding can flatten a face: the mesh leaves it out and counts it.
-    let mut shape = Mesh::new(vertices, mesh.triangles).map_err(|e| blame(root, at, e))?;
-    if let Some(normals) = mesh.normals.filter(|_| attributes.normals) {
+    let mut shape = Mesh::new(vertices, mesh.triangles.clone()).map_err(|e| blame(root, at, e))?;
+    if let Some(normals) = mesh.normals.as_ref().filter(|_| attributes.normals) {
         // Each normal's direction, rounded to F once it is of unit length (a normal placed
         // by a tiny scale may not be finite in F before).
-        let placed = normals.into_iter().map(|n| {
+        let placed = normals.iter().map(|&n| {
             let n = placement.apply_normal(n);
             vec::<F>(n.try_normalize().unwrap_or(n).to_f64())
         });
@@ -402,9 +400,9 @@ pub(super) fn placed<F: Float>(
             .with_normals(placed.collect())
             .map_err(|e| blame(root, at, e))?;
     }
-    if let Some(uvs) = mesh.uvs {
+    if let Some(uvs) = &mesh.uvs {
         let flip = |[u, v]: [f64; 2]| [u, if attributes.flip_v { 1.0 - v } else { v }];
-        let uvs = uvs.into_iter().map(|uv| flip(uv).map(F::from_f64)).collect();
+        let uvs = uvs.iter().map(|&uv| flip(uv).map(F::from_f64)).collect();
         shape = shape.with_uvs(uvs).map_err(|e| blame(root, at, e))?;
     }
     summary.skipped_degenerate += shape.skipped_degenerate() + mesh.skipped_degenerate;

@@ -3,7 +3,7 @@
 //! mapped as [`mtl_spec::map`] says and built with its images.
 
 use super::SceneFile;
-use super::build::{Attributes, mesh_placement, placed};
+use super::build::{Attributes, mesh, mesh_placement};
 use super::check::vec;
 use super::location::KeyPath;
 use super::make;
@@ -80,7 +80,7 @@ pub(super) fn add<F: Float>(
         let made = Maps::read(&part.material, &mut bitmaps, &mut summary.notes)
             .and_then(|maps| material::<F>(&part.material, &maps, attributes.flip_v, &mut summary.notes))
             .map_err(|e| at.key("material").wrap(e))?;
-        let mesh = placed::<F>(root, at, part.mesh, &placement, attributes, summary)?;
+        let mesh = mesh::<F>(root, at, &part.mesh, &placement, attributes, summary)?;
         scene.add(mesh, made);
     }
     Ok(())

@@ -43,6 +43,7 @@ mod example_files;
 mod example_options;
 mod flat_shapes;
 mod glass;
+mod gltf;
 mod instance_files;
 mod instances;
 mod interrupt;

@@ -7,14 +7,18 @@ use raytrace::{Camera, Result};
 use std::collections::BTreeMap;
 use std::path::Path;
 
-/// The scene file at `path`: TOML, or a Mitsuba 3 XML scene (by its `.xml` extension)
-/// imported with `defines` for its `$NAME`s, with what the import read and its warnings.
+/// The scene file at `path`: TOML, a Mitsuba 3 XML scene (by its `.xml` extension)
+/// imported with `defines` for its `$NAME`s, or a glTF 2.0 file (`.gltf`, `.glb`), with
+/// what the import read and its warnings.
 pub fn load(path: &Path, defines: &[(String, String)]) -> Result<(SceneFile, Option<Imported>)> {
-    if !raytrace::import::is_mitsuba(path) {
+    let mut imported = if raytrace::import::is_mitsuba(path) {
+        let defines: BTreeMap<String, String> = defines.iter().cloned().collect();
+        raytrace::import::mitsuba(path, &defines)?
+    } else if raytrace::import::is_gltf(path) {
+        raytrace::import::gltf(path)?
+    } else {
         return Ok((SceneFile::load(path)?, None));
-    }
-    let defines: BTreeMap<String, String> = defines.iter().cloned().collect();
-    let mut imported = raytrace::import::mitsuba(path, &defines)?;
+    };
     let file = std::mem::replace(&mut imported.file, SceneFile::empty(path));
     Ok((file, Some(imported)))
 }
@@ -43,12 +47,16 @@ pub fn check(path: &Path, defines: &[(String, String)]) -> Result<()> {
     let r = file.render();
     println!("{}: valid", path.display());
     if let Some(imported) = &imported {
-        println!("  read from Mitsuba 3 XML: {} plugins", imported.read.len());
+        if raytrace::import::is_gltf(path) {
+            println!("  read from glTF 2.0:");
+        } else {
+            println!("  read from Mitsuba 3 XML: {} plugins", imported.read.len());
+        }
         for plugin in &imported.read {
             println!("    {plugin}");
         }
         for warning in &imported.warnings {
-            println!("  differs from Mitsuba: {warning}");
+            println!("  {}: {warning}", differs(path));
         }
     }
     println!(
@@ -100,9 +108,18 @@ pub fn check(path: &Path, defines: &[(String, String)]) -> Result<()> {
     Ok(())
 }
 
+/// How a warning of an import of `path` starts: what the render differs from.
+pub fn differs(path: &Path) -> &'static str {
+    if raytrace::import::is_gltf(path) {
+        "not as the glTF file says"
+    } else {
+        "differs from Mitsuba"
+    }
+}
+
 /// Prints the measured precision advice.
 pub fn advise(path: &Path) -> Result<()> {
-    let file = SceneFile::load(path)?;
+    let (file, _) = load(path, &[])?;
     let advice = advise_precision(&file)?;
     print(path, &advice);
     Ok(())

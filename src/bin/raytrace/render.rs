@@ -20,7 +20,7 @@ use raytrace::{Camera, Error, Float, Rect, Render, Renderer, Result};
 pub fn run(args: &RenderArgs) -> Result<(), Failure> {
     let (mut file, imported) = crate::inspect::load(&args.scene, &args.define)?;
     for warning in imported.iter().flat_map(|i| &i.warnings) {
-        eprintln!("warning: differs from Mitsuba: {warning}");
+        eprintln!("warning: {}: {warning}", crate::inspect::differs(&args.scene));
     }
     override_settings(&mut file, args)?;
     render(args, &file).map_err(|e| blame_option(e, args))
