@@ -2,8 +2,8 @@
 //! how long the build took and the tree's size and SAH cost: a driver for profiling the
 //! build (`valgrind --tool=callgrind`) and for comparing trees.
 //!
-//! `cargo run --release --example bvh_build -- --spheres 100000 --threads 2`
-//! `cargo run --release --example bvh_build -- --mesh assets/meshes/dragon_vrip.ply`
+//! `cargo run --release --features studies --example bvh_build -- --spheres 100000 --threads 2`
+//! `cargo run --release --features studies --example bvh_build -- --mesh assets/meshes/dragon_vrip.ply`
 
 use clap::Parser;
 use rand::{RngExt, SeedableRng};

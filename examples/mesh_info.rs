@@ -1,7 +1,7 @@
 //! Loads a mesh and prints what it holds: vertex, triangle and skipped-face counts, the
 //! bounding box and how long the load took.
 //!
-//! `cargo run --release --example mesh_info -- assets/meshes/dragon_vrip.ply`
+//! `cargo run --release --features studies --example mesh_info -- assets/meshes/dragon_vrip.ply`
 //! (`tools/fetch_meshes.sh` fetches that one; any `.obj` or `.ply` file works).
 
 use clap::Parser;

@@ -1,7 +1,7 @@
 //! Next-event estimation with MIS against scattered rays alone on the Cornell box: error
 //! against samples and against time, with the Monte Carlo rate `1/√N`.
 //!
-//! `cargo run --release --example nee_efficiency` renders `scenes/cornell_box.toml`
+//! `cargo run --release --features studies --example nee_efficiency` renders `scenes/cornell_box.toml`
 //! (64 × 64 by default) once as a reference with MIS (`--spp`, default 4096, its own seed)
 //! and then with each technique at 1, 2, 4 … 256 samples per pixel, and writes
 //! `nee_efficiency.csv` and `nee_efficiency.svg` into `report/figures/` (`--out DIR` to

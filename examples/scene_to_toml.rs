@@ -158,6 +158,19 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
                 let [a, b, c] = t.vertices().map(|v| v.to_f64());
                 ObjectSpec::Triangle { a, b, c, material }
             }
+            ShapeKind::Disk(d) => {
+                // The unit disk's map: its axes, then a third column on the side of the
+                // front face (a negative determinant flips it, as in Mitsuba).
+                let ([u, v], c) = (d.axes().map(|a| a.to_f64()), d.center().to_f64());
+                let w = d.normal().to_f64();
+                ObjectSpec::Disk {
+                    center: [0.0; 3],
+                    normal: [0.0, 0.0, 1.0],
+                    radius: 1.0,
+                    matrix: Some(std::array::from_fn(|i| [u[i], v[i], w[i], c[i]])),
+                    material,
+                }
+            }
             ShapeKind::Mesh(_) | ShapeKind::Instance(_) => {
                 let why = format!("{}: a mesh cannot be written without its file", e.name);
                 return Err(raytrace::Error::InvalidSettings(why));

@@ -31,9 +31,9 @@
 #   failures/*.png, failures/failures.csv
 #       the textbook methods' failures beside the library's renders (report/failures);
 #   precision.csv, precision_time_vs_error.svg, convergence.csv, convergence.svg, precision.txt
-#       the accuracy study (cargo run --release --example precision);
+#       the accuracy study (cargo run --release --features studies --example precision);
 #   nee_efficiency.csv, nee_efficiency.svg
-#       emitters sampled or not (cargo run --release --example nee_efficiency);
+#       emitters sampled or not (cargo run --release --features studies --example nee_efficiency);
 #   renders/cornell_box.png, renders/dragon.png, cli/*.txt, ../data/tiles.csv
 #       scene files rendered and checked by the raytrace binary (the dragon and its tiles only if
 #       tools/fetch_meshes.sh has fetched it; otherwise the committed figure stays);
@@ -83,7 +83,7 @@ fi
 regenerate_figures() {
     export CARGO_TERM_COLOR=never
     echo "== building the examples (release)"
-    cargo build --release --examples --quiet
+    cargo build --release --features studies --examples --quiet
     mkdir -p "$FIG/renders"
     local tmp
     tmp=$(mktemp -d)

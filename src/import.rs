@@ -1,10 +1,10 @@
-//! Scenes made elsewhere: Mitsuba 3's XML scene format read into a [`SceneFile`], so
-//! that everything a scene file gets (checked values, errors at their place, tiles,
-//! precision advice) holds for it too.
+//! Scenes made elsewhere: Mitsuba 3's XML scene format and glTF 2.0 ([`gltf()`]) read
+//! into a [`SceneFile`], so that everything a scene file gets (checked values, errors at
+//! their place, tiles, precision advice) holds for them too.
 //!
 //! Read: `<default>` and `$name` (and `-D name=value`), `<include>`, `<path>`, `id` and
 //! `<ref>`; transforms (`lookat`, `translate`, `rotate`, `scale`, `matrix`); shapes `obj`,
-//! `ply`, `sphere`, `rectangle`, `cube`, `shapegroup` (of `obj` and `ply`) and `instance`;
+//! `ply`, `sphere`, `disk`, `rectangle`, `cube`, `shapegroup` (of `obj` and `ply`) and `instance`;
 //! every BSDF this renderer has (`diffuse`,
 //! `conductor`, `roughconductor`, `dielectric`, `roughdielectric`, `thindielectric`,
 //! `plastic`, `roughplastic`, `twosided`, `normalmap`); textures `bitmap` and
@@ -12,8 +12,7 @@
 //! sensors `perspective` and `thinlens` (`fov`, `fov_axis`); `hdrfilm`, the `independent`
 //! sampler and the `path` integrator. Anything else is an error naming the plugin, its
 //! file and line; what is rendered with a difference (another reconstruction filter, an
-//! unbounded depth) is a warning naming it. Not yet read: `disk` (an error, so nothing
-//! is silently left out).
+//! unbounded depth) is a warning naming it.
 //!
 //! Mitsuba counts path segments in `max_depth`, this renderer bounces: a scene lit only by
 //! point-like lights and a non-emitting background renders with one bounce fewer, one with
@@ -31,6 +30,7 @@ mod bsdf;
 mod convert;
 mod exact;
 mod extension;
+pub mod gltf;
 mod sensor;
 mod shading;
 mod shape;
@@ -55,6 +55,28 @@ pub fn mitsuba(path: &Path, defines: &BTreeMap<String, String>) -> Result<Import
     let mut importer = convert::Importer::new(SceneFile::empty(path), document.folders);
     importer.render_defaults(&document.defines, path)?;
     importer.run(&document.plugins)
+}
+
+/// The glTF 2.0 file at `path` (`.gltf` JSON or `.glb` binary, told apart by its first
+/// bytes) as a scene file, its meshes and images held in memory
+/// ([`SceneFile::assets`]); [`Imported::read`] lists what was read, and
+/// [`Imported::warnings`] what renders differently from the file (an extension not read,
+/// a material property averaged, alpha). `docs/SCENE_FORMAT.md` states the mapping.
+///
+/// # Errors
+/// [`Error::SceneFile`](crate::Error::SceneFile) naming the file and the JSON path
+/// (`meshes[0].primitives[1].attributes.POSITION`), or the line and column of malformed
+/// JSON: a truncated or malformed file, an index or accessor out of range, a buffer
+/// shorter than it declares, a missing buffer or image file, a required extension not
+/// read. [`Error::Image`](crate::Error::Image) for an image that cannot be decoded.
+pub fn gltf(path: &Path) -> Result<Imported> {
+    gltf::import(path)
+}
+
+/// Whether `path` names a glTF file (by its extension, `.gltf` or `.glb`).
+pub fn is_gltf(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb"))
 }
 
 /// Whether `path` names a Mitsuba XML scene (by its extension, `.xml`).

@@ -1,14 +1,22 @@
-//! Triangle meshes from files: Wavefront OBJ and Stanford PLY.
+//! Triangle meshes from files: Wavefront OBJ and Stanford PLY (and, through
+//! [`from_arrays`], from the arrays an importer decoded).
 //!
 //! A mesh is loaded as shared vertex positions and triangles indexing them. Polygons are
 //! split into triangles as fans; faces without area are skipped and counted, so a caller
-//! can report them.
+//! can report them. An OBJ file may also be read split by the materials of its `.mtl`
+//! libraries ([`load_parts`]).
 
+mod arrays;
 mod check;
+mod mtl;
 mod obj;
+mod obj_parts;
 mod ply;
 mod source;
 
+pub use arrays::from_arrays;
+pub use mtl::{At, MtlLibrary, MtlMap, MtlMaterial, read as read_mtl};
+pub use obj_parts::{ObjPart, ObjParts, load_parts, material_files, usemtl_names};
 pub use source::{MAX_LINE_BYTES, MAX_MESH_BYTES};
 
 use crate::error::{Error, Result};

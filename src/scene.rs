@@ -93,6 +93,7 @@ impl<F: Float> EnumScene<F> {
                 ShapeKind::Sphere(s) => Box::new(*s),
                 ShapeKind::Plane(p) => Box::new(*p),
                 ShapeKind::Triangle(t) => Box::new(*t),
+                ShapeKind::Disk(d) => Box::new(Arc::clone(d)),
                 ShapeKind::Mesh(m) => Box::new(Arc::clone(m)),
                 ShapeKind::Instance(i) => Box::new(Arc::clone(i)),
             };

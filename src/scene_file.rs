@@ -31,34 +31,42 @@
 //! # Ok::<(), raytrace::Error>(())
 //! ```
 
+mod assets;
 mod bsdf;
 mod build;
 mod camera;
 mod check;
+mod disk;
 mod integer;
 mod light;
 mod location;
 mod make;
 mod make_bsdf;
 mod model;
+mod mtl_spec;
+mod obj_materials;
 mod objects;
 mod resolve;
+mod summary;
 mod texture_spec;
 mod transform;
 mod triple;
 mod warnings;
 
+pub use assets::Assets;
 pub use bsdf::{
     ConductorSpec, DistributionSpec, IorSpec, PlasticSpec, RoughConductorSpec, RoughDielectricSpec,
     RoughPlasticSpec, RoughnessSpec, ThinDielectricSpec, TwoSidedSpec,
 };
-pub use build::{Built, Summary};
+pub use build::Built;
 pub use camera::FileCamera;
 pub use light::LightSpec;
 pub use model::{
     BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, MaterialSpec, RenderOptions, Triple,
 };
+pub use obj_materials::FROM_MTL;
 pub use objects::{MeshDef, ObjectSpec, Scale};
+pub use summary::Summary;
 pub use texture_spec::{ScalarRef, TextureRef, TextureSpec, UvScale, WrapSpec};
 pub use transform::Placement;
 pub use warnings::Warning;
@@ -104,6 +112,9 @@ pub struct SceneFile {
     /// The text it was parsed from, to tell where a value refused later is written.
     #[serde(skip)]
     source: location::Source,
+    /// Meshes and images an importer holds in memory, which `file` keys may name.
+    #[serde(skip)]
+    assets: std::sync::Arc<Assets>,
 }
 
 impl SceneFile {
@@ -201,10 +212,24 @@ impl SceneFile {
         &self.path
     }
 
+    /// The meshes and images an importer holds in memory for the file's `file` keys (none
+    /// for a file parsed from TOML).
+    pub fn assets(&self) -> &Assets {
+        &self.assets
+    }
+
+    /// Sets the meshes and images held in memory: a `file` key naming one of them is not
+    /// read from disk, and the files they came from count among [`SceneFile::input_files`].
+    pub fn set_assets(&mut self, assets: Assets) {
+        self.assets = std::sync::Arc::new(assets);
+    }
+
     /// The other files the scene is made from, as [`SceneFile::build`] finds them
     /// (relative to the scene file's folder): the environment map's, each mesh's in the
-    /// order of `[[objects]]`, the `[meshes]` entries' by name, then the textures'
-    /// [images](Self::image_files).
+    /// order of `[[objects]]`, the `[meshes]` entries' by name, then for each mesh object with
+    /// `material = "mtl"` its `.mtl` libraries and their images that exist, then the
+    /// textures' [images](Self::image_files), then the files the [assets](Self::assets)
+    /// held in memory were read from (a name held in memory is not a file).
     pub fn input_files(&self) -> Vec<PathBuf> {
         let folder = self.path.parent().unwrap_or(Path::new(""));
         let map = match &self.background {
@@ -212,20 +237,32 @@ impl SceneFile {
             _ => None,
         };
         let meshes = self.objects.iter().filter_map(|o| match o {
-            ObjectSpec::Mesh { file, .. } => Some(folder.join(file)),
+            ObjectSpec::Mesh { file, .. } => Some(file),
             _ => None,
         });
-        let shared = self.meshes.values().map(|m| folder.join(&m.file));
-        map.into_iter()
-            .chain(meshes)
+        let shared = self.meshes.values().map(|m| &m.file);
+        let on_disk = meshes
             .chain(shared)
+            .filter(|f| !self.assets.holds(f))
+            .map(|f| folder.join(f));
+        let materials = self.objects.iter().flat_map(|o| match o {
+            ObjectSpec::Mesh { file, .. } if obj_materials::wants_mtl(o) => {
+                crate::mesh::material_files(&folder.join(file))
+            }
+            _ => Vec::new(),
+        });
+        map.into_iter()
+            .chain(on_disk)
+            .chain(materials)
             .chain(self.image_files())
+            .chain(self.assets.sources().iter().cloned())
             .collect()
     }
 
     /// The image files the scene's textures read, as [`SceneFile::build`] finds them
     /// (relative to the scene file's folder): those of `[textures]` in the order of their
-    /// names, then those written in place in `[materials]`, each once.
+    /// names, then those written in place in `[materials]`, each once (not the images
+    /// held in memory).
     pub fn image_files(&self) -> Vec<PathBuf> {
         let folder = self.path.parent().unwrap_or(Path::new(""));
         let inline = self
@@ -239,6 +276,9 @@ impl SceneFile {
         let mut files: Vec<PathBuf> = Vec::new();
         for spec in self.textures.values().chain(inline) {
             if let TextureSpec::Image { file, .. } = spec {
+                if self.assets.holds(file) {
+                    continue;
+                }
                 let path = folder.join(file);
                 if !files.contains(&path) {
                     files.push(path);
@@ -292,6 +332,13 @@ impl SceneFile {
     /// [`Warning::NoObjects`], [`Warning::NoLight`].
     pub fn warnings(&self) -> Vec<Warning> {
         warnings::static_warnings(self)
+    }
+
+    /// For each mesh object whose one `material` covers an OBJ file that names materials
+    /// with `usemtl`: a note naming the object, the file and the names, which are not used
+    /// (`material = "mtl"`, [`FROM_MTL`], takes them). Reads those OBJ files' text.
+    pub fn unused_obj_materials(&self) -> Vec<String> {
+        obj_materials::unused_usemtl(self)
     }
 
     /// [`Warning::DarkPreview`] if a small render of `built` (this file's scene) is black

@@ -1,6 +1,7 @@
 //! The spec's abstract object: the [`Hittable`] trait, the [`Hit`] it reports, and
 //! [`ShapeKind`], the enum fast path over the concrete shapes.
 
+mod disk;
 mod hit;
 mod instance;
 mod kind;
@@ -12,6 +13,7 @@ mod sphere4;
 mod triangle;
 mod triangle4;
 
+pub use disk::Disk;
 pub use hit::{Coordinates, Hit, Surface, flat_hit_error, flat_surface};
 pub use instance::{Instance, Prototype};
 pub use kind::ShapeKind;
@@ -102,7 +104,7 @@ impl<F: Float> Intersection<F> {
 ///
 /// # Sampling as a light
 /// An emissive shape that answers [`area`](Hittable::area), [`sample`](Hittable::sample)
-/// and [`pdf`](Hittable::pdf) (spheres, triangles and meshes do) is also sampled directly
+/// and [`pdf`](Hittable::pdf) (spheres, disks, triangles and meshes do) is also sampled directly
 /// from the surfaces it lights (next-event estimation); one that answers `None`, `None`
 /// and `0` is lit only by rays that happen to hit it. `pdf` must be the density `sample`
 /// draws with.

@@ -190,6 +190,9 @@ class Writer:
             self.open('<shape type="raytrace_triangle">')
             for key in "abc":
                 self.put(f'<point name="{key}" value="{nums(o[key])}"/>')
+        elif kind == "disk" and "matrix" in o:  # by center, normal, radius it has no twin
+            self.open('<shape type="disk">')
+            self.placement({"matrix": o["matrix"]})
         elif kind == "mesh":
             ext = o["file"].rsplit(".", 1)[-1].lower()
             self.open(f'<shape type="{ext}">')

@@ -1,4 +1,5 @@
-//! The user's side of `custom_shape`: a shape ([`Disk`]) and a material ([`Checker`]) the
+//! The user's side of `custom_shape`: a shape ([`Disk`], a round disk of the user's own,
+//! simpler than the library's `raytrace::shape::Disk`) and a material ([`Checker`]) the
 //! library does not have, the two enums that put them beside the library's on the enum
 //! path, and the scene built on both dispatch paths. `tests/it/custom_shape.rs` includes this
 //! file too.

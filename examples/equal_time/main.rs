@@ -19,8 +19,8 @@
 //! budget, with the machine's load before and after) and `docs/images/equal_time.svg`.
 //!
 //! ```sh
-//! cargo run --release --example equal_time            # about half an hour on 2 cores
-//! cargo run --release --example equal_time -- --quick # a smoke test in seconds, to /tmp
+//! cargo run --release --features studies --example equal_time            # about half an hour on 2 cores
+//! cargo run --release --features studies --example equal_time -- --quick # a smoke test in seconds, to /tmp
 //! ```
 //!
 //! Timing on a shared machine is noisy: run it on an idle one, and read the load the
@@ -267,7 +267,7 @@ fn table(runs: &[Run], plan: &Plan, loads: (&str, &str), threads: usize) -> Stri
     let mut md = String::from("# Adaptive against uniform sampling at equal time\n\n");
     let _ = writeln!(
         md,
-        "`cargo run --release --example equal_time` on {threads} threads, f32, {} pixels wide \
+        "`cargo run --release --features studies --example equal_time` on {threads} threads, f32, {} pixels wide \
          (the Cornell box {c}×{c}), seed 1, references 2 × {} spp. Load average (1, 5, 15 min) \
          before: {}; after: {}. Each figure is the mean of {} seeds, each an adaptive render \
          given the time the uniform render just before it took.\n",

@@ -2,7 +2,7 @@
 //! and the textbook intersection, each compared with a double-double reference along the
 //! same random stream; then a convergence run of a Monte Carlo scene.
 //!
-//! `cargo run --release --example precision` writes `precision.csv` and the SVG charts
+//! `cargo run --release --features studies --example precision` writes `precision.csv` and the SVG charts
 //! into `report/figures/` (`--out DIR` to change), and prints the per-scene advice.
 //! `--spp` and `--max-depth` apply to the Monte Carlo cases and the convergence run; the
 //! mirror scenes always use one ray per pixel centre and their own depth. `--precision`

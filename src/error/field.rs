@@ -29,6 +29,14 @@ pub enum Field {
     Triangle,
     /// [`Mesh::new`](crate::Mesh::new)'s vertices and triangles, as a whole.
     Mesh,
+    /// A [`Disk`](crate::shape::Disk)'s centre.
+    DiskCenter,
+    /// [`Disk::new`](crate::shape::Disk::new)'s normal.
+    DiskNormal,
+    /// [`Disk::new`](crate::shape::Disk::new)'s radius.
+    DiskRadius,
+    /// [`Disk::with_axes`](crate::shape::Disk::with_axes)'s axes `U` and `V`, together.
+    DiskAxes,
     /// [`Mirror::new`](crate::Mirror::new)'s albedo.
     MirrorAlbedo,
     /// [`Lambertian::new`](crate::Lambertian::new)'s albedo.
@@ -129,7 +137,7 @@ pub enum Field {
     /// [`Tonemap::new`](crate::image::Tonemap::new)'s exposure.
     Exposure,
     /// A parameter of a type outside the library (a user's own shape or material), named
-    /// by its author: `Error::invalid("disk radius", …)` makes one.
+    /// by its author: `Error::invalid("torus radius", …)` makes one.
     Custom(&'static str),
 }
 
@@ -153,6 +161,10 @@ impl Field {
             Self::TriangleC => "triangle vertex C",
             Self::Triangle => "triangle",
             Self::Mesh => "mesh",
+            Self::DiskCenter => "disk centre",
+            Self::DiskNormal => "disk normal",
+            Self::DiskRadius => "disk radius",
+            Self::DiskAxes => "disk axes",
             Self::MirrorAlbedo => "mirror albedo",
             Self::MatteAlbedo => "matte albedo",
             Self::RefractiveIndex => "refractive index",

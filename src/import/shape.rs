@@ -1,5 +1,5 @@
 //! Mitsuba 3's `<shape>` plugins as objects: meshes (`obj`, `ply`, placed by any map),
-//! spheres, the unit `rectangle` and `cube` as triangles, and `shapegroup`s placed by
+//! spheres, disks, the unit `rectangle` and `cube` as triangles, and `shapegroup`s placed by
 //! `instance`s. A shape's `<bsdf>` names its material; an `area` emitter makes it emissive.
 
 use super::convert::Importer;
@@ -94,6 +94,20 @@ impl Importer {
                 self.file.objects.push(ObjectSpec::Sphere {
                     center: m.point(c),
                     radius: radius * scale,
+                    material,
+                });
+            }
+            "disk" => {
+                // `flip_normals` turns the unit disk over first: Mitsuba's `to_world·scale(1, 1, −1)`.
+                let m = match self.boolean(s, "flip_normals")? {
+                    Some(true) => Affine::scale([1.0, 1.0, -1.0]).then(&m),
+                    _ => m,
+                };
+                self.file.objects.push(ObjectSpec::Disk {
+                    center: [0.0; 3],
+                    normal: [0.0, 0.0, 1.0],
+                    radius: 1.0,
+                    matrix: (m != Affine::IDENTITY).then(|| m.rows()),
                     material,
                 });
             }

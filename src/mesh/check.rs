@@ -149,6 +149,12 @@ impl Triangulator {
         }
     }
 
+    /// How many triangles are kept so far.
+    pub(super) fn triangles(&self) -> u32 {
+        // A mesh file of at most 4 GiB has fewer: each triangle takes a face index's bytes.
+        u32::try_from(self.mesh.triangles.len()).unwrap_or(u32::MAX)
+    }
+
     /// Adds face number `face` (its vertex indices in order) as a fan of triangles around its
     /// first vertex, skipping and counting those without area.
     ///

@@ -2,8 +2,9 @@
 //!
 //! Positions, faces, normals (`vn`) and texture coordinates (`vt`) are read, through
 //! `tobj`'s single-index loading: each distinct `v/vt/vn` triple a face uses becomes one
-//! vertex. Materials (`mtllib`, `usemtl`) are dropped, so a missing `.mtl` file is no
-//! error. Every object and group of the file goes into one mesh. `l` lines count as
+//! vertex. Materials (`mtllib`, `usemtl`) are dropped here, so a missing `.mtl` file is no
+//! error; [`super::obj_parts`] reads them when asked. Every object and group of the file
+//! goes into one mesh. `l` lines count as
 //! faces, as `tobj` reads them.
 
 use super::MeshData;
@@ -16,6 +17,12 @@ use std::path::Path;
 
 /// Loads an OBJ mesh.
 pub(super) fn load(path: &Path) -> Result<MeshData> {
+    load_faces(path).map(|(mesh, _)| mesh)
+}
+
+/// Loads an OBJ mesh, with where each face's triangles start: face `k` (the `k`-th `f` or
+/// `l` line, from 0) became the triangles `starts[k]..starts[k + 1]` (none if degenerate).
+pub(super) fn load_faces(path: &Path) -> Result<(MeshData, Vec<u32>)> {
     let fail = |message: String| Error::Mesh {
         path: path.to_path_buf(),
         message,
@@ -96,14 +103,17 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
     )
     .map_err(located)?;
     let mut mesh = Triangulator::new(positions);
+    let mut starts = Vec::with_capacity(faces.len() + 1);
     for (number, face) in faces.into_iter().enumerate() {
+        starts.push(mesh.triangles());
         mesh.add_face(number, face.into_iter().map(i64::from))
             .map_err(located)?;
     }
+    starts.push(mesh.triangles());
     let mut mesh = mesh.finish().map_err(|p| fail(p.to_string()))?;
     mesh.normals = normals;
     mesh.uvs = uvs;
-    Ok(mesh)
+    Ok((mesh, starts))
 }
 
 /// The message for a mesh whose vertices cannot be indexed by `u32`.

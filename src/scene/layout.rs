@@ -1,7 +1,7 @@
 //! Which parts of a scene's shapes the scene may test four at a time.
 
 use crate::float::Float;
-use crate::shape::{Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
+use crate::shape::{Disk, Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
 use crate::vec3::Vec3;
 
 /// What a part of a shape is, as far as a scene's index can use it.
@@ -44,6 +44,7 @@ impl<F: Float> Layout<F> for ShapeKind<F> {
             Self::Sphere(s) => s.primitive(part),
             Self::Plane(p) => p.primitive(part),
             Self::Triangle(t) => t.primitive(part),
+            Self::Disk(d) => Disk::primitive(d, part),
             Self::Mesh(m) => m.primitive(part),
             // Tested whole, through its own BVH.
             Self::Instance(_) => Primitive::Other,
@@ -73,5 +74,7 @@ impl<F: Float> Layout<F> for Mesh<F> {
 }
 
 impl<F: Float> Layout<F> for Plane<F> {}
+
+impl<F: Float> Layout<F> for Disk<F> {}
 
 impl<F: Float> Layout<F> for Box<dyn Hittable<F> + Send + Sync> {}

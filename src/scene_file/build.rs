@@ -1,6 +1,7 @@
 //! Building a scene file's scene, camera and settings, every value checked on the way.
 
 use super::SceneFile;
+use super::assets::Assets;
 use super::camera::FileCamera;
 use super::check::{blame, checked, vec};
 use super::location::KeyPath;
@@ -8,16 +9,17 @@ use super::make::{self, Solid};
 use super::model::{BackgroundSpec, CameraSpec, Triple};
 use super::objects::{ObjectSpec, Scale};
 use super::resolve::Resolver;
+use super::summary::{Summary, count};
 use super::transform::Placement;
-use crate::aabb::Aabb;
 use crate::background::EnvironmentMap;
 use crate::error::{Error, Field, Result};
 use crate::float::Float;
 use crate::image::Tonemap;
-use crate::material::{Material, MaterialKind};
+use crate::material::MaterialKind;
+use crate::mesh::MeshData;
 use crate::render::RenderSettings;
 use crate::scene::EnumScene;
-use crate::shape::{Hittable, Instance, Mesh, Prototype, ShapeKind};
+use crate::shape::{Instance, Mesh, Prototype, ShapeKind};
 use crate::transform::Affine;
 use crate::validate::{number, rule, show};
 use std::collections::BTreeMap;
@@ -37,35 +39,6 @@ pub struct Built<F> {
     pub tonemap: Tonemap,
     /// What the scene holds.
     pub summary: Summary,
-}
-
-/// What a built scene holds.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Summary {
-    /// Spheres.
-    pub spheres: usize,
-    /// Planes.
-    pub planes: usize,
-    /// Triangles, those of meshes included.
-    pub triangles: usize,
-    /// Mesh objects.
-    pub meshes: usize,
-    /// Placements of shared meshes (their triangles count among the triangles, once per
-    /// placement).
-    pub instances: usize,
-    /// Lights (point, spot, directional).
-    pub lights: usize,
-    /// Objects that give off light (of an emissive material).
-    pub emitters: usize,
-    /// Of those, the ones sampled as lights (spheres, triangles and meshes; not planes).
-    pub sampled_emitters: usize,
-    /// Mesh faces left out for having no area: those the mesh reader skipped and those
-    /// the placement (or the rounding to the render's scalar) made degenerate.
-    pub skipped_degenerate: usize,
-    /// The box around every bounded object (all but planes), if there is one.
-    pub bounds: Option<Aabb<f64>>,
-    /// Whether the scene intersects through a BVH.
-    pub uses_bvh: bool,
 }
 
 /// Builds `file` in scalar `F`.
@@ -105,6 +78,16 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
     let prototypes = prototypes(&root, file, folder)?;
     for (i, object) in file.objects.iter().enumerate() {
         let at = root.key("objects").index(i);
+        if super::obj_materials::wants_mtl(object) {
+            super::obj_materials::add(
+                &mut scene,
+                &mut summary,
+                (&root, &at),
+                object,
+                (folder, &materials),
+            )?;
+            continue;
+        }
         let Some(m) = materials.get(object.material()).cloned() else {
             return Err(at
                 .key("material")
@@ -116,7 +99,7 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
             (&root, &at),
             object,
             m,
-            (folder, &prototypes),
+            (folder, file.assets(), &prototypes),
         )?;
     }
     for (i, light) in file.lights.iter().enumerate() {
@@ -211,12 +194,19 @@ fn add_object<F: Float>(
     (root, at): (&KeyPath, &KeyPath),
     spec: &ObjectSpec,
     material: MaterialKind<F>,
-    (folder, prototypes): (&Path, &BTreeMap<&str, Arc<Prototype>>),
+    (folder, assets, prototypes): (&Path, &Assets, &BTreeMap<&str, Arc<Prototype>>),
 ) -> Result<()> {
     let solid = match *spec {
         ObjectSpec::Sphere { center, radius, .. } => Solid::Sphere { center, radius },
         ObjectSpec::Plane { point, normal, .. } => Solid::Plane { point, normal },
         ObjectSpec::Triangle { a, b, c, .. } => Solid::Triangle { a, b, c },
+        ObjectSpec::Disk {
+            center,
+            normal,
+            radius,
+            matrix,
+            ..
+        } => super::disk::solid((root, at), center, normal, radius, matrix)?,
         ObjectSpec::Mesh {
             ref file,
             scale,
@@ -227,20 +217,11 @@ fn add_object<F: Float>(
             matrix,
             ..
         } => {
-            let placement = match matrix {
-                Some(rows) => {
-                    only_matrix(at, scale, rotate, translate)?;
-                    let map = Affine::from_rows(rows).map_err(|e| blame(root, &at.key("matrix"), e))?;
-                    Placement::map(map).map_err(|e| blame(root, &at.key("matrix"), e))?
-                }
-                None => placement(at, scale.factors(), rotate, translate)?,
-            };
+            let placement = mesh_placement((root, at), scale, rotate, translate, matrix)?;
             let path = folder.join(file);
-            let attributes = Attributes {
-                normals: !face_normals,
-                flip_v: flip_tex_coords.unwrap_or_else(|| crate::mesh::flips_tex_coords(&path)),
-            };
-            let shape = mesh::<F>(root, at, &path, &placement, attributes, summary)?;
+            let attributes = Attributes::new(&path, face_normals, flip_tex_coords);
+            let data = load_mesh(assets, folder, file).map_err(|e| at.key("file").wrap(e))?;
+            let shape = mesh::<F>(root, at, &data, &placement, attributes, summary)?;
             scene.add(shape, material);
             return Ok(());
         }
@@ -274,6 +255,24 @@ fn add_object<F: Float>(
     Ok(())
 }
 
+/// A mesh object's placement: its `matrix`, or its `scale`, `rotate` and `translate`.
+pub(super) fn mesh_placement(
+    (root, at): (&KeyPath, &KeyPath),
+    scale: Scale,
+    rotate: Triple,
+    translate: Triple,
+    matrix: Option<[[f64; 4]; 3]>,
+) -> Result<Placement> {
+    match matrix {
+        Some(rows) => {
+            only_matrix(at, scale, rotate, translate)?;
+            let map = Affine::from_rows(rows).map_err(|e| blame(root, &at.key("matrix"), e))?;
+            Placement::map(map).map_err(|e| blame(root, &at.key("matrix"), e))
+        }
+        None => placement(at, scale.factors(), rotate, translate),
+    }
+}
+
 /// Every `[meshes]` entry read once, by name, for the instances to share.
 fn prototypes<'f>(
     root: &KeyPath,
@@ -283,12 +282,21 @@ fn prototypes<'f>(
     let mut made = BTreeMap::new();
     for (name, def) in &file.meshes {
         let at = root.key("meshes").key(name).key("file");
-        let mesh = crate::mesh::load(&folder.join(&def.file)).map_err(|e| at.wrap(e))?;
+        let mesh = load_mesh(file.assets(), folder, &def.file).map_err(|e| at.wrap(e))?;
         let vertices = mesh.positions.iter().map(|p| p.to_f64()).collect();
-        let prototype = Prototype::new(vertices, mesh.triangles).map_err(|e| at.wrap(e))?;
+        let prototype = Prototype::new(vertices, mesh.triangles.clone()).map_err(|e| at.wrap(e))?;
         made.insert(name.as_str(), Arc::new(prototype));
     }
     Ok(made)
+}
+
+/// The mesh a `file` key names: one held in memory ([`Assets`]), else the mesh file at
+/// that path relative to `folder`.
+fn load_mesh(assets: &Assets, folder: &Path, file: &str) -> Result<Arc<MeshData>> {
+    match assets.mesh(file) {
+        Some(mesh) => Ok(Arc::clone(mesh)),
+        None => crate::mesh::load(&folder.join(file)).map(Arc::new),
+    }
 }
 
 /// An instance's map from its mesh's space to the scene's: scale, rotate about x, then y,
@@ -336,25 +344,35 @@ fn placement(at: &KeyPath, scale: Triple, rotate: Triple, translate: Triple) -> 
 
 /// Which of a mesh file's vertex attributes a mesh takes, and how.
 #[derive(Clone, Copy, Debug)]
-struct Attributes {
+pub(super) struct Attributes {
     /// Whether its normals are kept (not `face_normals`).
     normals: bool,
     /// Whether its texture coordinates' `v` is flipped, `v ↦ 1 − v`.
-    flip_v: bool,
+    pub(super) flip_v: bool,
 }
 
-/// The mesh at `path`, placed and rounded to `F`, with the file's normals (placed as
-/// normals are) and texture coordinates as `attributes` say; its skipped faces are
-/// counted in `summary`.
-fn mesh<F: Float>(
+impl Attributes {
+    /// A mesh object's `face_normals` and `flip_tex_coords` (unset: the default for the
+    /// format of the file at `path`).
+    pub(super) fn new(path: &Path, face_normals: bool, flip_tex_coords: Option<bool>) -> Self {
+        Self {
+            normals: !face_normals,
+            flip_v: flip_tex_coords.unwrap_or_else(|| crate::mesh::flips_tex_coords(path)),
+        }
+    }
+}
+
+/// The mesh `mesh`, placed and rounded to `F`, with its normals (placed as normals are)
+/// and texture coordinates as `attributes` say; its skipped faces are counted in
+/// `summary`.
+pub(super) fn mesh<F: Float>(
     root: &KeyPath,
     at: &KeyPath,
-    path: &Path,
+    mesh: &MeshData,
     placement: &Placement,
     attributes: Attributes,
     summary: &mut Summary,
 ) -> Result<Mesh<F>> {
-    let mesh = crate::mesh::load(path).map_err(|e| at.key("file").wrap(e))?;
     let mut vertices = Vec::with_capacity(mesh.positions.len());
     for (k, &p) in mesh.positions.iter().enumerate() {
         let placed = placement.apply(p);
@@ -370,11 +388,11 @@ fn mesh<F: Float>(
         vertices.push(v);
     }
     // Placement and rounding can flatten a face: the mesh leaves it out and counts it.
-    let mut shape = Mesh::new(vertices, mesh.triangles).map_err(|e| blame(root, at, e))?;
-    if let Some(normals) = mesh.normals.filter(|_| attributes.normals) {
+    let mut shape = Mesh::new(vertices, mesh.triangles.clone()).map_err(|e| blame(root, at, e))?;
+    if let Some(normals) = mesh.normals.as_ref().filter(|_| attributes.normals) {
         // Each normal's direction, rounded to F once it is of unit length (a normal placed
         // by a tiny scale may not be finite in F before).
-        let placed = normals.into_iter().map(|n| {
+        let placed = normals.iter().map(|&n| {
             let n = placement.apply_normal(n);
             vec::<F>(n.try_normalize().unwrap_or(n).to_f64())
         });
@@ -382,40 +400,12 @@ fn mesh<F: Float>(
             .with_normals(placed.collect())
             .map_err(|e| blame(root, at, e))?;
     }
-    if let Some(uvs) = mesh.uvs {
+    if let Some(uvs) = &mesh.uvs {
         let flip = |[u, v]: [f64; 2]| [u, if attributes.flip_v { 1.0 - v } else { v }];
-        let uvs = uvs.into_iter().map(|uv| flip(uv).map(F::from_f64)).collect();
+        let uvs = uvs.iter().map(|&uv| flip(uv).map(F::from_f64)).collect();
         shape = shape.with_uvs(uvs).map_err(|e| blame(root, at, e))?;
     }
     summary.skipped_degenerate += shape.skipped_degenerate() + mesh.skipped_degenerate;
     summary.meshes += 1;
     Ok(shape)
-}
-
-/// Fills in the counts, the bounds and whether a BVH is used.
-fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
-    let mut bounds: Option<Aabb<f64>> = None;
-    for o in scene.objects() {
-        match &o.shape {
-            ShapeKind::Sphere(_) => summary.spheres += 1,
-            ShapeKind::Plane(_) => summary.planes += 1,
-            ShapeKind::Triangle(_) => summary.triangles += 1,
-            ShapeKind::Mesh(m) => summary.triangles += m.parts() as usize,
-            ShapeKind::Instance(i) => {
-                summary.instances += 1;
-                summary.triangles += i.prototype().triangles().len();
-            }
-        }
-        if let Some(b) = o.shape.bounds() {
-            let b = Aabb::new(b.min.cast::<f64>(), b.max.cast::<f64>());
-            bounds = Some(bounds.map_or(b, |all| all.union(b)));
-        }
-    }
-    summary.lights = scene.lights().len();
-    // Asked of the material, not its kind: a normal map over an emitter still emits.
-    let emits = |m: &MaterialKind<F>| m.emits().is_some();
-    summary.emitters = scene.objects().iter().filter(|o| emits(&o.material)).count();
-    summary.sampled_emitters = scene.emitters().len();
-    summary.bounds = bounds;
-    summary.uses_bvh = scene.uses_bvh();
 }

@@ -33,6 +33,11 @@ pub fn key<'a>(root: &KeyPath<'a>, entry: &KeyPath<'a>, field: Field) -> KeyPath
         // No area: all three vertices together, so the entry.
         Field::Triangle => entry.clone(),
         Field::Mesh => own("file"),
+        Field::DiskCenter => own("center"),
+        Field::DiskNormal => own("normal"),
+        Field::DiskRadius => own("radius"),
+        // The axes come only from a disk's `matrix`.
+        Field::DiskAxes => own("matrix"),
         Field::MirrorAlbedo | Field::MatteAlbedo | Field::DielectricAlbedo | Field::EmissiveAlbedo => {
             own("albedo")
         }

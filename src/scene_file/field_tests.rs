@@ -93,6 +93,19 @@ fn case(field: Field) -> Option<Case> {
             false,
             "objects[0]",
         ),
+        Field::DiskCenter => (object("disk", "center = [0, 0, inf]"), false, "objects[0].center"),
+        Field::DiskNormal => (
+            object("disk", "normal = [0, 1e-50, 0]"),
+            true,
+            "objects[0].normal",
+        ),
+        Field::DiskRadius => (object("disk", "radius = 1e-60"), true, "objects[0].radius"),
+        // Axes at an angle of 10⁻¹⁰: apart in f64, parallel within f32's rounding.
+        Field::DiskAxes => (
+            object("disk", "matrix = [[1, 1, 0, 0], [0, 1e-10, 0, 0], [0, 0, 1, -3]]"),
+            true,
+            "objects[0].matrix",
+        ),
         // Moved where f32's step is 8: its x coordinates, ±1 about 10⁸, round to one value.
         Field::Mesh => (
             object("mesh", "file = \"meshes/rectangle.obj\"\ntranslate = [1e8, 0, 0]"),
@@ -324,7 +337,7 @@ fn small_map() -> &'static Path {
 /// Every field but those no scene file can get wrong (a user's own, a rotation matrix). A
 /// field added to [`Field`] needs a case in the `match` above to compile, and belongs here
 /// too.
-const FIELDS: [Field; 56] = [
+const FIELDS: [Field; 60] = [
     Field::SphereCenter,
     Field::SphereRadius,
     Field::PlanePoint,
@@ -334,6 +347,10 @@ const FIELDS: [Field; 56] = [
     Field::TriangleC,
     Field::Triangle,
     Field::Mesh,
+    Field::DiskCenter,
+    Field::DiskNormal,
+    Field::DiskRadius,
+    Field::DiskAxes,
     Field::MirrorAlbedo,
     Field::MatteAlbedo,
     Field::RefractiveIndex,

@@ -15,7 +15,7 @@ use crate::error::Result;
 use crate::float::{Float, lit};
 use crate::light::{DirectionalLight, Light, PointLight, SpotLight};
 use crate::material::{Dielectric, Emissive, Lambertian, MaterialKind, Mirror, NormalMap, Reflectance};
-use crate::shape::{Plane, ShapeKind, Sphere, Triangle};
+use crate::shape::{Disk, Plane, ShapeKind, Sphere, Triangle};
 use crate::vec3::Vec3;
 use std::sync::Arc;
 
@@ -28,6 +28,20 @@ pub enum Solid {
     Plane { point: [f64; 3], normal: [f64; 3] },
     /// `type = "triangle"`.
     Triangle { a: [f64; 3], b: [f64; 3], c: [f64; 3] },
+    /// `type = "disk"` by its centre, normal and radius.
+    Disk {
+        center: [f64; 3],
+        normal: [f64; 3],
+        radius: f64,
+    },
+    /// `type = "disk"` by a `matrix`: the unit disk's images of the origin, `x̂` and `ŷ`,
+    /// facing `−(u×v)` if the map's determinant is negative.
+    DiskAxes {
+        center: [f64; 3],
+        u: [f64; 3],
+        v: [f64; 3],
+        flipped: bool,
+    },
 }
 
 /// The shape in `G`.
@@ -36,6 +50,20 @@ pub fn shape<G: Float>(solid: Solid) -> Result<ShapeKind<G>> {
         Solid::Sphere { center, radius } => Sphere::new(vec(center), lit(radius))?.into(),
         Solid::Plane { point, normal } => Plane::new(vec(point), vec(normal))?.into(),
         Solid::Triangle { a, b, c } => Triangle::new(vec(a), vec(b), vec(c))?.into(),
+        Solid::Disk {
+            center,
+            normal,
+            radius,
+        } => Disk::new(vec(center), vec(normal), lit(radius))?.into(),
+        Solid::DiskAxes {
+            center,
+            u,
+            v,
+            flipped,
+        } => {
+            let disk = Disk::with_axes(vec(center), vec(u), vec(v))?;
+            (if flipped { disk.flipped() } else { disk }).into()
+        }
     })
 }
 

@@ -43,6 +43,25 @@ pub enum ObjectSpec {
         /// The material's name.
         material: String,
     },
+    /// A flat disk: Mitsuba's unit disk (radius 1 about the origin, facing `+z`) unless
+    /// `center`, `normal` and `radius` say otherwise, or a `matrix` places it.
+    Disk {
+        /// The centre (default the origin).
+        #[serde(deserialize_with = "super::triple::deserialize", default)]
+        center: Triple,
+        /// The normal (any non-zero length), pointing to the front face (default `+z`).
+        #[serde(deserialize_with = "super::triple::deserialize", default = "z_up")]
+        normal: Triple,
+        /// The radius, `> 0` (default 1).
+        #[serde(default = "one")]
+        radius: f64,
+        /// Instead of `center`, `normal` and `radius`: the rows `[L | t]` of an invertible
+        /// affine map of the unit disk (a Mitsuba scene's `to_world`).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        matrix: Option<[[f64; 4]; 3]>,
+        /// The material's name.
+        material: String,
+    },
     /// A triangle mesh from an OBJ or PLY file, scaled, then rotated, then translated.
     Mesh {
         /// The mesh file, relative to the scene file's folder.
@@ -109,10 +128,19 @@ impl ObjectSpec {
             Self::Sphere { material, .. }
             | Self::Plane { material, .. }
             | Self::Triangle { material, .. }
+            | Self::Disk { material, .. }
             | Self::Mesh { material, .. }
             | Self::Instance { material, .. } => material,
         }
     }
+}
+
+fn z_up() -> Triple {
+    [0.0, 0.0, 1.0]
+}
+
+fn one() -> f64 {
+    1.0
 }
 
 /// A mesh's scale: one factor for all axes (`scale = 2`) or one per axis (`[1, 2, 1]`).

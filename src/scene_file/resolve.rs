@@ -155,9 +155,14 @@ impl<'a> Resolver<'a> {
         }
     }
 
-    /// The pixels of `file` (relative to the scene file's folder) read as `decode` says:
-    /// loaded the first time, shared after.
+    /// The pixels of `file`: an image held in memory ([`Assets`](super::Assets)) as it is,
+    /// else the file (relative to the scene file's folder) read as `decode` says, loaded
+    /// the first time and shared after.
     fn bitmap(&mut self, at: &KeyPath, file: &str, decode: Decode) -> Result<Arc<Bitmap>> {
+        // An importer's image is held decoded already.
+        if let Some(held) = self.file.assets().image(file) {
+            return Ok(Arc::clone(held));
+        }
         let path = self.folder.join(file);
         let key = (path, decode);
         if let Some(b) = self.bitmaps.get(&key) {

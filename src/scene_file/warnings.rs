@@ -65,11 +65,13 @@ pub(super) fn static_warnings(file: &SceneFile) -> Vec<Warning> {
         BackgroundSpec::Envmap { scale, .. } => *scale > 0.0,
     };
     let lights = file.lights.iter().any(|l| bright(l.color()));
+    // An OBJ file's own materials are read when the scene is built: assume light.
     let emitters = file.objects.iter().any(|o| {
-        matches!(
-            file.materials.get(o.material()),
-            Some(MaterialSpec::Emissive { radiance, .. }) if bright(*radiance)
-        )
+        super::obj_materials::wants_mtl(o)
+            || matches!(
+                file.materials.get(o.material()),
+                Some(MaterialSpec::Emissive { radiance, .. }) if bright(*radiance)
+            )
     });
     if !(background || lights || emitters) {
         found.push(Warning::NoLight);

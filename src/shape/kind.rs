@@ -1,7 +1,7 @@
 //! [`ShapeKind`]: the enum fast path over the concrete shapes.
 
 use super::{
-    Coordinates, Hit, Hittable, Instance, Intersection, Mesh, Plane, Sphere, SurfaceSample, Triangle,
+    Coordinates, Disk, Hit, Hittable, Instance, Intersection, Mesh, Plane, Sphere, SurfaceSample, Triangle,
 };
 use crate::aabb::Aabb;
 use crate::float::Float;
@@ -18,6 +18,9 @@ pub enum ShapeKind<F> {
     Plane(Plane<F>),
     /// A [`Triangle`].
     Triangle(Triangle<F>),
+    /// A [`Disk`], shared: inline it would be the largest variant and grow every object of
+    /// every scene (72 to 112 bytes in `f32`) for a shape few scenes have.
+    Disk(Arc<Disk<F>>),
     /// A triangle [`Mesh`], shared: cloning the shape does not copy its buffers.
     Mesh(Arc<Mesh<F>>),
     /// A placement of a shared mesh ([`Instance`]).
@@ -31,6 +34,7 @@ macro_rules! each_shape {
             ShapeKind::Sphere($s) => $call,
             ShapeKind::Plane($s) => $call,
             ShapeKind::Triangle($s) => $call,
+            ShapeKind::Disk($s) => $call,
             ShapeKind::Mesh($s) => $call,
             ShapeKind::Instance($s) => $call,
         }
@@ -100,6 +104,12 @@ impl<F> From<Triangle<F>> for ShapeKind<F> {
     }
 }
 
+impl<F> From<Disk<F>> for ShapeKind<F> {
+    fn from(d: Disk<F>) -> Self {
+        Self::Disk(Arc::new(d))
+    }
+}
+
 impl<F> From<Mesh<F>> for ShapeKind<F> {
     fn from(m: Mesh<F>) -> Self {
         Self::Mesh(Arc::new(m))
@@ -125,6 +135,7 @@ impl<F: Float> ShapeKind<F> {
             Self::Sphere(s) => s.cast()?.into(),
             Self::Plane(p) => p.cast()?.into(),
             Self::Triangle(t) => t.cast()?.into(),
+            Self::Disk(d) => d.cast()?.into(),
             Self::Mesh(m) => m.cast()?.into(),
             Self::Instance(i) => i.cast()?.into(),
         })

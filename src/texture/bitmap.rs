@@ -113,6 +113,20 @@ impl Bitmap {
         })
     }
 
+    /// Decodes an image held in memory (a glTF file's embedded PNG or JPEG) as
+    /// [`Bitmap::load`] decodes a file; `name` says where it came from in messages.
+    ///
+    /// # Errors
+    /// [`Error::Image`], naming `name`, for bytes of an unknown format, truncated or
+    /// malformed, declaring more than [`MAX_TEXTURE_PIXELS`] pixels (refused before
+    /// decoding), or holding a value that is not finite. No bytes make it panic.
+    pub fn decode(bytes: &[u8], decode: Decode, name: &Path) -> Result<Self> {
+        super::load::decode_bytes(bytes, decode).map_err(|message| Error::Image {
+            path: name.to_path_buf(),
+            message,
+        })
+    }
+
     /// The width in pixels.
     pub fn width(&self) -> usize {
         self.width

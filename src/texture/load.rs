@@ -5,7 +5,7 @@
 use super::bitmap::{Bitmap, Decode, MAX_TEXTURE_PIXELS, check_size, srgb_to_linear};
 use ::image::{DynamicImage, ImageDecoder, ImageReader, Limits};
 use std::fs::File;
-use std::io::{BufReader, Read};
+use std::io::{BufRead, BufReader, Cursor, Read, Seek};
 use std::path::Path;
 
 /// The first four bytes of every OpenEXR file.
@@ -38,7 +38,19 @@ pub(super) fn load(path: &Path, decode: Decode) -> Result<Bitmap, String> {
 /// A PNG, JPEG or Radiance HDR file, its format guessed from its first bytes.
 fn load_other(path: &Path, decode: Decode) -> Result<Bitmap, String> {
     let file = File::open(path).map_err(|e| format!("cannot open the image: {e}"))?;
-    let mut reader = ImageReader::new(BufReader::new(file))
+    decode_reader(BufReader::new(file), decode)
+}
+
+/// The bitmap of an encoded image held in memory (a glTF file's embedded PNG or JPEG),
+/// or why not: PNG, JPEG or Radiance HDR, its format guessed from its first bytes.
+pub(super) fn decode_bytes(bytes: &[u8], decode: Decode) -> Result<Bitmap, String> {
+    decode_reader(Cursor::new(bytes), decode)
+}
+
+/// An image read from `reader`, its format guessed from its first bytes, its size checked
+/// from its header before a pixel is decoded.
+fn decode_reader(reader: impl BufRead + Seek, decode: Decode) -> Result<Bitmap, String> {
+    let mut reader = ImageReader::new(reader)
         .with_guessed_format()
         .map_err(|e| format!("cannot read the image: {e}"))?;
     if reader.format().is_none() {

@@ -1,10 +1,12 @@
-//! The error bounds of [`Plane`] and [`Triangle`] hits, and pbrt's `TestReintersectConvex`
-//! invariant for them: a ray spawned from a hit never hits the same shape again.
+//! The error bounds of [`Plane`], [`Triangle`] and [`Disk`] hits, and pbrt's
+//! `TestReintersectConvex` invariant for them: a ray spawned from a hit never hits the same
+//! shape again.
 //!
 //! For random shapes at scales 1, 10³, 10⁴ (f32) and up to 10⁸ (f64) — random position,
-//! orientation and (for triangles) size and shape, half of them with a vertex next to the
-//! world origin — seeded rays are aimed at random points of the shape (for triangles, half
-//! of them very close to a vertex) from random origins. For every hit:
+//! orientation and (for triangles and disks) size and shape, half of them with a vertex (a
+//! disk's centre) next to the world origin — seeded rays are aimed at random points of the
+//! shape (for triangles, half of them very close to a vertex) from random origins. For
+//! every hit:
 //! 1. the exact surface (evaluated in double-double) passes through the box
 //!    `point ± error` the hit reports;
 //! 2. rays spawned with [`Hit::spawn`](raytrace::Hit::spawn) along the mirror
@@ -26,7 +28,7 @@ use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 use raytrace::optics::reflect;
 use raytrace::sampling::unit_sphere_rejection;
-use raytrace::shape::{Plane, Triangle};
+use raytrace::shape::{Disk, Plane, Triangle};
 use raytrace::{Float, Hittable, Ray, Vec3, lit};
 use twofloat::TwoFloat;
 
@@ -126,6 +128,43 @@ impl<F: Float> Flat<F> for Triangle<F> {
     fn exact_plane(&self) -> (Dd, Dd) {
         let [a, b, c] = self.vertices().map(|v| v.cast::<TwoFloat>());
         (a, (b - a).cross(c - a))
+    }
+}
+
+impl<F: Float> Flat<F> for Disk<F> {
+    const NAME: &'static str = "disk";
+    fn random(rng: &mut Xoshiro256PlusPlus, scale: f64) -> Option<Self> {
+        // Any two axes (an ellipse, often long and thin) of 1 % to 100 % of the scale,
+        // about a centre anywhere or (half of them) next to the world origin.
+        let size = scale * 10f64.powf(uniform(rng, -2.0, 0.0));
+        let centre = if rng.random::<bool>() {
+            let near = scale * 10f64.powf(uniform(rng, -8.0, -2.0));
+            in_cube(rng, near)
+        } else {
+            in_cube(rng, scale)
+        };
+        let (u, v) = (in_cube(rng, size), in_cube(rng, size));
+        let disk = Disk::with_axes(to_vec(centre), to_vec(u), to_vec(v)).ok()?;
+        Some(if rng.random::<bool>() {
+            disk.flipped()
+        } else {
+            disk
+        })
+    }
+    fn target(&self, rng: &mut Xoshiro256PlusPlus, _scale: f64) -> Vec3<F> {
+        // C + aU + bV for (a, b) uniform in the unit disk, in f64.
+        let (r, phi) = (
+            rng.random::<f64>().sqrt(),
+            std::f64::consts::TAU * rng.random::<f64>(),
+        );
+        let (a, b) = (r * phi.cos(), r * phi.sin());
+        let c = self.center().to_f64();
+        let [u, v] = self.axes().map(|x| x.to_f64());
+        to_vec(std::array::from_fn(|i| c[i] + a * u[i] + b * v[i]))
+    }
+    fn exact_plane(&self) -> (Dd, Dd) {
+        // The disk's plane is the set (X − C)·n = 0 for the stored centre and unit normal.
+        (self.center().cast(), self.normal().cast())
     }
 }
 
@@ -287,4 +326,14 @@ fn triangle_hits_are_bounded_and_never_reintersect_f32() {
 #[test]
 fn triangle_hits_are_bounded_and_never_reintersect_f64() {
     check_all::<f64, Triangle<f64>>(&SCALES_F64, 400);
+}
+
+#[test]
+fn disk_hits_are_bounded_and_never_reintersect_f32() {
+    check_all::<f32, Disk<f32>>(&SCALES_F32, 500);
+}
+
+#[test]
+fn disk_hits_are_bounded_and_never_reintersect_f64() {
+    check_all::<f64, Disk<f64>>(&SCALES_F64, 600);
 }

@@ -225,10 +225,10 @@ fn a_scene_lands_as_the_scene_files_own_keys() {
 
 #[test]
 fn what_is_not_read_is_an_error_naming_the_plugin_file_and_line() {
-    let disk = SCENE.replace("<shape type=\"rectangle\">", "<shape type=\"disk\">");
-    let message = import_error(&disk, "disk");
+    let cylinder = SCENE.replace("<shape type=\"rectangle\">", "<shape type=\"cylinder\">");
+    let message = import_error(&cylinder, "cylinder");
     assert!(
-        message.contains("scene.xml") && message.contains("line 39") && message.contains("disk"),
+        message.contains("scene.xml") && message.contains("line 39") && message.contains("cylinder"),
         "{message}"
     );
     let undefined = SCENE.replace("$radius", "$size");

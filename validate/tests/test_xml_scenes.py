@@ -12,7 +12,8 @@ import ours
 import xml_check
 
 PLUGINS = {
-    ("shape", k) for k in ("obj", "ply", "sphere", "rectangle", "cube", "shapegroup", "instance")
+    ("shape", k) for k in ("obj", "ply", "sphere", "disk", "rectangle", "cube", "shapegroup",
+                           "instance")
 } | {
     ("bsdf", k) for k in ("diffuse", "conductor", "roughconductor", "dielectric",
                           "roughdielectric", "thindielectric", "plastic", "roughplastic",

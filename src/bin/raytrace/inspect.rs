@@ -7,14 +7,18 @@ use raytrace::{Camera, Result};
 use std::collections::BTreeMap;
 use std::path::Path;
 
-/// The scene file at `path`: TOML, or a Mitsuba 3 XML scene (by its `.xml` extension)
-/// imported with `defines` for its `$NAME`s, with what the import read and its warnings.
+/// The scene file at `path`: TOML, a Mitsuba 3 XML scene (by its `.xml` extension)
+/// imported with `defines` for its `$NAME`s, or a glTF 2.0 file (`.gltf`, `.glb`), with
+/// what the import read and its warnings.
 pub fn load(path: &Path, defines: &[(String, String)]) -> Result<(SceneFile, Option<Imported>)> {
-    if !raytrace::import::is_mitsuba(path) {
+    let mut imported = if raytrace::import::is_mitsuba(path) {
+        let defines: BTreeMap<String, String> = defines.iter().cloned().collect();
+        raytrace::import::mitsuba(path, &defines)?
+    } else if raytrace::import::is_gltf(path) {
+        raytrace::import::gltf(path)?
+    } else {
         return Ok((SceneFile::load(path)?, None));
-    }
-    let defines: BTreeMap<String, String> = defines.iter().cloned().collect();
-    let mut imported = raytrace::import::mitsuba(path, &defines)?;
+    };
     let file = std::mem::replace(&mut imported.file, SceneFile::empty(path));
     Ok((file, Some(imported)))
 }
@@ -43,17 +47,21 @@ pub fn check(path: &Path, defines: &[(String, String)]) -> Result<()> {
     let r = file.render();
     println!("{}: valid", path.display());
     if let Some(imported) = &imported {
-        println!("  read from Mitsuba 3 XML: {} plugins", imported.read.len());
+        if raytrace::import::is_gltf(path) {
+            println!("  read from glTF 2.0:");
+        } else {
+            println!("  read from Mitsuba 3 XML: {} plugins", imported.read.len());
+        }
         for plugin in &imported.read {
             println!("    {plugin}");
         }
         for warning in &imported.warnings {
-            println!("  differs from Mitsuba: {warning}");
+            println!("  {}: {warning}", differs(path));
         }
     }
     println!(
-        "  objects: {} spheres, {} planes, {} triangles (meshes: {}, instances: {}), {} lights",
-        s.spheres, s.planes, s.triangles, s.meshes, s.instances, s.lights
+        "  objects: {} spheres, {} planes, {} disks, {} triangles (meshes: {}, instances: {}), {} lights",
+        s.spheres, s.planes, s.disks, s.triangles, s.meshes, s.instances, s.lights
     );
     if s.emitters > 0 {
         println!(
@@ -91,12 +99,27 @@ pub fn check(path: &Path, defines: &[(String, String)]) -> Result<()> {
     for w in warnings {
         eprintln!("warning: {}: {w}", path.display());
     }
+    for note in file.unused_obj_materials() {
+        eprintln!("warning: {}: {note}", path.display());
+    }
+    for note in &s.notes {
+        eprintln!("warning: {note}");
+    }
     Ok(())
+}
+
+/// How a warning of an import of `path` starts: what the render differs from.
+pub fn differs(path: &Path) -> &'static str {
+    if raytrace::import::is_gltf(path) {
+        "not as the glTF file says"
+    } else {
+        "differs from Mitsuba"
+    }
 }
 
 /// Prints the measured precision advice.
 pub fn advise(path: &Path) -> Result<()> {
-    let file = SceneFile::load(path)?;
+    let (file, _) = load(path, &[])?;
     let advice = advise_precision(&file)?;
     print(path, &advice);
     Ok(())

@@ -20,7 +20,7 @@ use raytrace::{Camera, Error, Float, Rect, Render, Renderer, Result};
 pub fn run(args: &RenderArgs) -> Result<(), Failure> {
     let (mut file, imported) = crate::inspect::load(&args.scene, &args.define)?;
     for warning in imported.iter().flat_map(|i| &i.warnings) {
-        eprintln!("warning: differs from Mitsuba: {warning}");
+        eprintln!("warning: {}: {warning}", crate::inspect::differs(&args.scene));
     }
     override_settings(&mut file, args)?;
     render(args, &file).map_err(|e| blame_option(e, args))
@@ -141,6 +141,9 @@ fn render_in<F: Float>(file: &SceneFile, args: &RenderArgs) -> Result<(Render, (
     let built = file.build::<F>()?;
     for w in file.warnings() {
         eprintln!("warning: {}: {w}", file.path().display());
+    }
+    for note in &built.summary.notes {
+        eprintln!("warning: {note}");
     }
     if built.summary.skipped_degenerate > 0 {
         eprintln!(
