@@ -12,7 +12,8 @@
 //! sensors `perspective` and `thinlens` (`fov`, `fov_axis`); `hdrfilm`, the `independent`
 //! sampler and the `path` integrator. Anything else is an error naming the plugin, its
 //! file and line; what is rendered with a difference (another reconstruction filter, an
-//! unbounded depth) is a warning naming it.
+//! unbounded depth) is a warning naming it, and so is a parameter of a plugin read that
+//! nothing reads (unknown, or misspelt): the render is as if it were absent.
 //!
 //! Mitsuba counts path segments in `max_depth`, this renderer bounces: a scene lit only by
 //! point-like lights and a non-emitting background renders with one bounce fewer, one with

@@ -14,8 +14,9 @@ impl Importer {
     /// The material of the `<bsdf>` plugin `b`.
     pub(super) fn material(&mut self, b: &Plugin) -> Result<MaterialSpec> {
         self.read(b);
+        let asked = self.asked.clone();
         let ior = |name: &str, default: &str| -> Result<IorSpec> {
-            Ok(match b.properties.get(name).map(|p| &p.value) {
+            Ok(match asked.property(b, name).map(|p| &p.value) {
                 None => IorSpec::Named(default.into()),
                 Some(Value::Number(x)) => IorSpec::Value(*x),
                 Some(Value::Text(s)) => IorSpec::Named(s.clone()),
@@ -238,7 +239,7 @@ impl Importer {
 
     /// A texture's `to_uv`: a scale and an offset of `uv`, nothing else.
     fn to_uv(&self, t: &Plugin) -> Result<(UvScale, [f64; 2])> {
-        let Some(p) = t.properties.get("to_uv") else {
+        let Some(p) = self.property(t, "to_uv") else {
             return Ok((UvScale::Uniform(1.0), [0.0; 2]));
         };
         let Value::Transform(t) = &p.value else {

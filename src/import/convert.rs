@@ -8,8 +8,10 @@ use crate::error::{Error, Result};
 
 use crate::scene_file::{BackgroundSpec, LightSpec, SceneFile};
 use crate::transform::Affine;
-use std::collections::BTreeMap;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;
+use std::rc::Rc;
 
 /// What an import gives: the scene, what it read and how it differs.
 #[derive(Debug)]
@@ -22,12 +24,32 @@ pub struct Imported {
     pub warnings: Vec<String>,
 }
 
+/// The properties asked for, as `(file, line, name)`.
+#[derive(Clone, Default)]
+pub(super) struct Asked(Rc<RefCell<BTreeSet<(PathBuf, u32, String)>>>);
+
+impl Asked {
+    /// The property `name` of `p`, noted as asked for.
+    pub(super) fn property<'p>(&self, p: &'p Plugin, name: &str) -> Option<&'p super::xml::Property> {
+        let q = p.properties.get(name)?;
+        let key = (q.at.file.clone(), q.at.line, name.to_string());
+        self.0.borrow_mut().insert(key);
+        Some(q)
+    }
+}
+
 /// Builds the scene file from the plugins.
 pub(super) struct Importer {
     pub(super) file: SceneFile,
     folders: Vec<PathBuf>,
     read: Vec<String>,
     warnings: Vec<String>,
+    /// Every property of a plugin read, as `(file, line, name)`, with its plugin's label: what
+    /// [`Importer::property`] never asks for is reported, so nothing is left out unsaid.
+    offered: Vec<((PathBuf, u32, String), String)>,
+    /// The properties asked for (shared with closures that read a plugin's properties
+    /// while the importer is borrowed mutably).
+    pub(super) asked: Asked,
     /// Set by an area emitter, the sampled environment: Mitsuba's `max_depth` then counts
     /// as the renderer's does.
     pub(super) lights_on_surfaces: bool,
@@ -42,6 +64,8 @@ impl Importer {
             folders,
             read: Vec::new(),
             warnings: Vec::new(),
+            offered: Vec::new(),
+            asked: Asked::default(),
             lights_on_surfaces: false,
             groups: BTreeMap::new(),
         }
@@ -97,6 +121,7 @@ impl Importer {
                     .into(),
             );
         }
+        self.unread();
         Ok(Imported {
             file: self.file,
             read: self.read,
@@ -105,6 +130,10 @@ impl Importer {
     }
 
     pub(super) fn read(&mut self, p: &Plugin) {
+        for (name, q) in &p.properties {
+            let key = (q.at.file.clone(), q.at.line, name.clone());
+            self.offered.push((key, p.label()));
+        }
         self.read.push(format!(
             "{} ({}, line {})",
             p.label(),
@@ -139,8 +168,25 @@ impl Importer {
         found.unwrap_or_else(|| self.folders[0].join(name))
     }
 
-    fn property<'p>(&self, p: &'p Plugin, name: &str) -> Option<&'p super::xml::Property> {
-        p.properties.get(name)
+    /// The property `name` of `p`, noted as asked for.
+    pub(super) fn property<'p>(&self, p: &'p Plugin, name: &str) -> Option<&'p super::xml::Property> {
+        self.asked.property(p, name)
+    }
+
+    /// A warning for each property of a plugin read that nothing asked for (a parameter
+    /// this importer does not know, or misspelt): the render is as if it were absent.
+    fn unread(&mut self) {
+        let asked = self.asked.0.take();
+        let mut told = BTreeSet::new();
+        for (key, label) in std::mem::take(&mut self.offered) {
+            if !asked.contains(&key) && told.insert(key.clone()) {
+                let (file, line, name) = key;
+                self.warnings.push(format!(
+                    "{label} ({}, line {line}): `{name}` is not read by this importer: rendered as if it were absent",
+                    file.display()
+                ));
+            }
+        }
     }
 
     pub(super) fn number(&self, p: &Plugin, name: &str) -> Result<Option<f64>> {

@@ -25,7 +25,7 @@ impl Importer {
     /// The steps of `p`'s `to_world`, none if it has none (or it is not a transform: the
     /// map's own reader says so).
     pub(super) fn steps<'p>(&self, p: &'p Plugin) -> &'p [Step] {
-        match p.properties.get("to_world").map(|q| &q.value) {
+        match self.property(p, "to_world").map(|q| &q.value) {
             Some(Value::Transform(t)) => &t.steps,
             _ => &[],
         }

@@ -42,7 +42,7 @@ impl Importer {
     /// `<shape type="raytrace_plane">` and `<shape type="raytrace_triangle">`, placed by
     /// their points as written (not by a `to_world`).
     pub(super) fn flat_shape(&mut self, s: &Plugin, material: String) -> Result<()> {
-        if s.properties.contains_key("to_world") {
+        if self.property(s, "to_world").is_some() {
             return Err(s.at.error(format!(
                 "{}: is placed by its points, not by a `to_world`",
                 s.label()

@@ -339,3 +339,31 @@ fn a_shapegroup_is_read_once_and_placed_by_each_instance() {
     assert_eq!(built.summary.instances, 2);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A parameter nothing reads (unknown, or misspelt) is a warning naming it, its plugin, file
+/// and line; the scene's own parameters, all read, give none.
+#[test]
+fn a_parameter_nothing_reads_is_a_warning_naming_it() {
+    let unread = |scene: &str, name: &str| {
+        let dir = folder(name, scene);
+        let imported = import::mitsuba(&dir.join("scene.xml"), &BTreeMap::new()).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let notes: Vec<String> = imported
+            .warnings
+            .into_iter()
+            .filter(|w| w.contains("is not read"))
+            .collect();
+        notes
+    };
+    assert_eq!(unread(SCENE, "all-read"), Vec::<String>::new());
+    let misspelt = SCENE.replace(
+        "<shape type=\"rectangle\">",
+        "<shape type=\"rectangle\">\n        <float name=\"radiuss\" value=\"2\"/>",
+    );
+    let notes = unread(&misspelt, "misspelt");
+    assert_eq!(notes.len(), 1, "{notes:?}");
+    let note = &notes[0];
+    for words in ["<shape type=\"rectangle\">", "scene.xml", "line 40", "`radiuss`"] {
+        assert!(note.contains(words), "{words}: {note}");
+    }
+}
