@@ -19,16 +19,18 @@
 //! budget, with the machine's load before and after) and `docs/images/equal_time.svg`.
 //!
 //! ```sh
-//! cargo run --release --features studies --example equal_time            # about half an hour on 2 cores
+//! cargo run --release --features studies --example equal_time            # about 3 minutes on 2 cores
 //! cargo run --release --features studies --example equal_time -- --quick # a smoke test in seconds, to /tmp
 //! ```
 //!
 //! Timing on a shared machine is noisy: run it on an idle one, and read the load the
 //! `.md` file records.
 
+mod bound;
 mod chart;
 #[path = "../scenes/mod.rs"]
 mod scenes;
+mod table;
 
 use raytrace::image::write_atomic;
 use raytrace::prelude::*;
@@ -186,7 +188,8 @@ fn mean(runs: &[Measured]) -> Measured {
 /// (at the adaptive levels) an adaptive render given the time that uniform render just
 /// took, pair `k` with seed `k + 1` for both: the pair shares the machine's load, and the
 /// errors are means over seeds (a caustic's error is a few fireflies: one seed is luck).
-fn measure(case: &Case, plan: &Plan, runs: &mut Vec<Run>) -> raytrace::Result<()> {
+/// Returns the scene's [`bound`](bound::bound).
+fn measure(case: &Case, plan: &Plan, runs: &mut Vec<Run>) -> raytrace::Result<f64> {
     let start = Instant::now();
     let r1 = uniform(case, plan.reference_spp, 1_000_001)?.image;
     let r2 = uniform(case, plan.reference_spp, 1_000_002)?.image;
@@ -220,8 +223,13 @@ fn measure(case: &Case, plan: &Plan, runs: &mut Vec<Run>) -> raytrace::Result<()
             push(runs, case, "adaptive", spp, m, e);
         }
     }
-    eprintln!("{}: {:.1} s", case.name, start.elapsed().as_secs_f64());
-    Ok(())
+    let bound = bound::bound(case, &r1, &r2)?;
+    eprintln!(
+        "{}: {:.1} s, bound {bound:.2}",
+        case.name,
+        start.elapsed().as_secs_f64()
+    );
+    Ok(bound)
 }
 
 fn push(
@@ -259,65 +267,6 @@ fn write(path: &Path, text: &str) -> raytrace::Result<()> {
         })?;
     }
     write_atomic(path, |w| std::io::Write::write_all(w, text.as_bytes()))
-}
-
-/// The table: each scene's ratios uniform/adaptive at each budget, squared errors at equal
-/// time (above 1: adaptive is better).
-fn table(runs: &[Run], plan: &Plan, loads: (&str, &str), threads: usize) -> String {
-    let mut md = String::from("# Adaptive against uniform sampling at equal time\n\n");
-    let _ = writeln!(
-        md,
-        "`cargo run --release --features studies --example equal_time` on {threads} threads, f32, {} pixels wide \
-         (the Cornell box {c}×{c}), seed 1, references 2 × {} spp. Load average (1, 5, 15 min) \
-         before: {}; after: {}. Each figure is the mean of {} seeds, each an adaptive render \
-         given the time the uniform render just before it took.\n",
-        plan.width,
-        plan.reference_spp,
-        loads.0,
-        loads.1,
-        plan.repeats,
-        c = plan.width * 3 / 5,
-    );
-    md.push_str(
-        "Squared error of uniform over adaptive at the same time (above 1: adaptive is lower), \
-         for the time uniform sampling takes at each spp: relative (`rel_mse`, the renderer's \
-         own measure), as displayed (`display_mse`, sRGB in [0, 1]) and linear (`mse`); and \
-         the relative error at equal rays, which the machine's load does not disturb \
-         (uniform's error scaled by its rays over adaptive's, as error ∝ 1/work):\n\n",
-    );
-    md.push_str("| scene |");
-    for level in &plan.adaptive {
-        let _ = write!(md, " {level} spp: rel | display | linear | rel, equal rays |");
-    }
-    md.push_str("\n|---|");
-    md.push_str(&"---|---|---|---|".repeat(plan.adaptive.len()));
-    md.push('\n');
-    let mut scenes: Vec<&str> = runs.iter().map(|r| r.scene).collect();
-    scenes.dedup();
-    for scene in scenes {
-        let _ = write!(md, "| {scene} |");
-        for &level in &plan.adaptive {
-            let find = |m| {
-                runs.iter()
-                    .find(|r| r.scene == scene && r.method == m && r.level == level)
-            };
-            match (find("uniform"), find("adaptive")) {
-                (Some(u), Some(a)) => {
-                    let _ = write!(
-                        md,
-                        " {:.2} | {:.2} | {:.2} | {:.2} |",
-                        u.rel_mse / a.rel_mse,
-                        u.display_mse / a.display_mse,
-                        u.mse / a.mse,
-                        u.rel_mse * u.rays / a.rays / a.rel_mse
-                    );
-                }
-                _ => md.push_str(" – | – | – | – |"),
-            }
-        }
-        md.push('\n');
-    }
-    md
 }
 
 fn main() -> raytrace::Result<()> {
@@ -362,10 +311,10 @@ fn main() -> raytrace::Result<()> {
         plan.figure = plan.results.join("equal_time.svg");
     }
     let before = load();
-    let mut runs = Vec::new();
+    let (mut runs, mut bounds) = (Vec::new(), Vec::new());
     for case in cases(plan.width)? {
         if only.is_empty() || only.contains(&case.name) {
-            measure(&case, &plan, &mut runs)?;
+            bounds.push((case.name, measure(&case, &plan, &mut runs)?));
         }
     }
     let after = load();
@@ -378,7 +327,13 @@ fn main() -> raytrace::Result<()> {
         );
     }
     write(&plan.results.join("equal_time.csv"), &csv)?;
-    let md = table(&runs, &plan, (&before, &after), rayon::current_num_threads());
+    let md = table::table(
+        &runs,
+        &bounds,
+        &plan,
+        (&before, &after),
+        rayon::current_num_threads(),
+    );
     write(&plan.results.join("equal_time.md"), &md)?;
     chart::draw(&plan.figure, &runs).map_err(|e| raytrace::Error::InvalidSettings(format!("chart: {e}")))?;
     println!("{md}");
