@@ -77,4 +77,5 @@ mod triangle_light_chi2;
 mod uv_conventions;
 mod value_stability;
 mod watertight;
+mod watertight_scene;
 mod xml_twins;
