@@ -38,7 +38,7 @@ fn height(i: usize, j: usize) -> f64 {
 /// Whether square `(i, j)` is split along its diagonal from `(i, j)` to `(i + 1, j + 1)`
 /// (else along the other one).
 fn main_diagonal(i: usize, j: usize) -> bool {
-    (i + j) % 2 == 0
+    (i + j).is_multiple_of(2)
 }
 
 /// The points the rays pass through, `(x, y)` in grid units, and the grid's height there:
