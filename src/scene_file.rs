@@ -46,6 +46,7 @@ mod model;
 mod mtl_spec;
 mod obj_materials;
 mod objects;
+mod placing;
 mod resolve;
 mod summary;
 mod texture_spec;

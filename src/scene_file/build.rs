@@ -6,8 +6,9 @@ use super::camera::FileCamera;
 use super::check::{blame, checked, vec};
 use super::location::KeyPath;
 use super::make::{self, Solid};
-use super::model::{BackgroundSpec, CameraSpec, Triple};
-use super::objects::{ObjectSpec, Scale};
+use super::model::{BackgroundSpec, CameraSpec};
+use super::objects::ObjectSpec;
+use super::placing::{affine, mesh_placement, only_matrix};
 use super::resolve::Resolver;
 use super::summary::{Summary, count};
 use super::transform::Placement;
@@ -255,24 +256,6 @@ fn add_object<F: Float>(
     Ok(())
 }
 
-/// A mesh object's placement: its `matrix`, or its `scale`, `rotate` and `translate`.
-pub(super) fn mesh_placement(
-    (root, at): (&KeyPath, &KeyPath),
-    scale: Scale,
-    rotate: Triple,
-    translate: Triple,
-    matrix: Option<[[f64; 4]; 3]>,
-) -> Result<Placement> {
-    match matrix {
-        Some(rows) => {
-            only_matrix(at, scale, rotate, translate)?;
-            let map = Affine::from_rows(rows).map_err(|e| blame(root, &at.key("matrix"), e))?;
-            Placement::map(map).map_err(|e| blame(root, &at.key("matrix"), e))
-        }
-        None => placement(at, scale.factors(), rotate, translate),
-    }
-}
-
 /// Every `[meshes]` entry read once, by name, for the instances to share.
 fn prototypes<'f>(
     root: &KeyPath,
@@ -297,49 +280,6 @@ fn load_mesh(assets: &Assets, folder: &Path, file: &str) -> Result<Arc<MeshData>
         Some(mesh) => Ok(Arc::clone(mesh)),
         None => crate::mesh::load(&folder.join(file)).map(Arc::new),
     }
-}
-
-/// An instance's map from its mesh's space to the scene's: scale, rotate about x, then y,
-/// then z, translate, as a mesh object's [`Placement`] (every number finite, no factor
-/// zero), composed as one [`Affine`].
-fn affine(at: &KeyPath, scale: Triple, rotate: Triple, translate: Triple) -> Result<Affine> {
-    placement(at, scale, rotate, translate)?;
-    let [rx, ry, rz] = rotate;
-    Ok(Affine::scale(scale)
-        .then(&Affine::rotate([1.0, 0.0, 0.0], rx))
-        .then(&Affine::rotate([0.0, 1.0, 0.0], ry))
-        .then(&Affine::rotate([0.0, 0.0, 1.0], rz))
-        .then(&Affine::translate(translate)))
-}
-
-/// A `matrix` is the whole placement: no `scale`, `rotate` or `translate` beside it.
-fn only_matrix(at: &KeyPath, scale: Scale, rotate: Triple, translate: Triple) -> Result<()> {
-    if scale.factors() != [1.0; 3] || rotate != [0.0; 3] || translate != [0.0; 3] {
-        return Err(at
-            .key("matrix")
-            .error("give either `matrix` or `scale`, `rotate` and `translate`, not both"));
-    }
-    Ok(())
-}
-
-/// A mesh's placement: every number finite, no scale factor zero.
-fn placement(at: &KeyPath, scale: Triple, rotate: Triple, translate: Triple) -> Result<Placement> {
-    let finite = |key: &str, t: Triple| {
-        rule::finite(vec::<f64>(t)).map_err(|why| at.key(key).error(why))?;
-        Ok::<_, Error>(t)
-    };
-    let factors = finite("scale", scale)?;
-    if factors.contains(&0.0) {
-        return Err(at.key("scale").error(format!(
-            "every factor must be non-zero (got {})",
-            show(vec::<f64>(factors))
-        )));
-    }
-    Ok(Placement::new(
-        factors,
-        finite("rotate", rotate)?,
-        finite("translate", translate)?,
-    ))
 }
 
 /// Which of a mesh file's vertex attributes a mesh takes, and how.

@@ -3,12 +3,13 @@
 //! mapped as [`mtl_spec::map`] says and built with its images.
 
 use super::SceneFile;
-use super::build::{Attributes, mesh, mesh_placement};
+use super::build::{Attributes, mesh};
 use super::check::vec;
 use super::location::KeyPath;
 use super::make;
 use super::mtl_spec::{self, DIFFUSE_MAP};
 use super::objects::ObjectSpec;
+use super::placing::mesh_placement;
 use super::resolve::{Inputs, TextureUse};
 use super::summary::Summary;
 use super::texture_spec::TextureRef;

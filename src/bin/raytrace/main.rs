@@ -20,6 +20,7 @@ mod layers;
 mod names;
 mod output;
 mod render;
+mod usage;
 
 use args::{Cli, Command};
 use clap::error::ErrorKind;
@@ -28,7 +29,7 @@ use std::process::ExitCode;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    if let Err(message) = output::check_usage(&cli.command) {
+    if let Err(message) = usage::check_usage(&cli.command) {
         Cli::command().error(ErrorKind::ArgumentConflict, message).exit();
     }
     if let Err(e) = raytrace::cli::clean_up_on_signals("raytrace") {
