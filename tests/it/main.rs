@@ -31,6 +31,7 @@ mod bsdf_scenes;
 mod bsdf_textures;
 mod bvh_scene;
 mod cli;
+mod committed_meshes;
 mod custom_shape;
 mod degenerate_scatter;
 mod disk_files;
