@@ -8,10 +8,12 @@ round), each run its own process on one thread, and keeps the median of each fig
   ours-f32, ours-f64   target/release/examples/random_spheres --threads 1 --precision f32|f64
   book-native          the book's C++, g++ -O3 -march=native (ours is built native too)
   book-release         the book's C++, g++ -O3 (its CMake Release flags, no -march)
-Wall time is the whole process (start, scene, BVH, render, files); user CPU and peak memory
-come from the kernel (wait4). Once more after the timed rounds, uncounted, our summary line and
-a counting build of the book's C++ give the rays each traced. Writes
-  <results>/book.csv       the medians: program,precision,rounds,wall_s,user_s,sys_s,peak_mb,rays,...
+Wall time is the whole process (start, scene, BVH, render, files); user and system CPU come
+from the kernel (wait4), peak memory from GNU time (/usr/bin/time, if present). Once more after
+the timed rounds, untimed, our summary line and a counting build of the book's C++ give the rays
+each traced. Writes
+  <results>/book.csv       the medians: program,rounds,width,height,spp,max_depth,wall_s,user_s,
+                           sys_s,peak_mb,rays,mrays_per_wall_s,speedup_vs_<each book build>
   <results>/book_runs.csv  every run
   <results>/book.md        the table, the ratios, the machine, the load and the commit
 
@@ -38,6 +40,9 @@ OURS = ROOT / "target" / "release" / "examples" / "random_spheres"
 BOOK = ROOT / "bench" / "book" / "build"
 PROGRAMS = ["ours-f32", "ours-f64", "book-native", "book-release"]
 FIGURES = ["wall_s", "user_s", "sys_s", "peak_mb"]
+# GNU time reports the program's own peak memory. wait4's ru_maxrss would not: Linux carries
+# the spawning Python's resident size into the child's maximum across exec.
+GNU_TIME = "/usr/bin/time"
 
 
 def parse_args():
@@ -91,10 +96,15 @@ def command(args, program, out):
 
 
 def timed(cmd, stdout, stderr, cpu):
-    """Runs `cmd` once: (wall s, user s, sys s, peak MB), from wait4's rusage."""
+    """Runs `cmd` once: (wall s, user s, sys s, peak MB); the times from wait4's rusage
+    (GNU time's own share is a millisecond, the same for every program), the peak from GNU
+    time (NaN without it)."""
     cmd = [str(c) for c in cmd]
     if cpu is not None:
         cmd = ["taskset", "-c", str(cpu)] + cmd
+    peak_file = Path(stderr).with_name("peak_kib")
+    if os.access(GNU_TIME, os.X_OK):
+        cmd = [GNU_TIME, "-f", "%M", "-o", str(peak_file)] + cmd
     with open(stdout, "wb") as out, open(stderr, "wb") as err:
         start = time.perf_counter()
         proc = subprocess.Popen(cmd, cwd=ROOT, stdout=out, stderr=err)
@@ -102,8 +112,9 @@ def timed(cmd, stdout, stderr, cpu):
         wall = time.perf_counter() - start
     if status != 0:  # the raw wait status: nonzero for an error exit or a signal
         sys.exit(f"failed (wait status {status}): {' '.join(cmd)}\n{Path(stderr).read_text(errors='replace')}")
-    # ru_maxrss is in KiB on Linux; MB of 10^6 bytes as bench/scale.py reports.
-    return wall, usage.ru_utime, usage.ru_stime, usage.ru_maxrss * 1024 / 1e6
+    # KiB; MB of 10^6 bytes as bench/scale.py reports.
+    peak = int(peak_file.read_text().split()[-1]) * 1024 / 1e6 if cmd[0] == GNU_TIME else float("nan")
+    return wall, usage.ru_utime, usage.ru_stime, peak
 
 
 def ppm_size(path):
@@ -209,8 +220,9 @@ def write(args, runs, rays, load, info):
         "|---" * (7 + len(books)) + "|",
     ]
     for row in rows:
-        lines.append(f"| {row['program']} | {row['wall_s']} | {row['user_s']} | {row['sys_s']} | "
-                     f"{row['peak_mb']} | {row['rays']} | {row['mrays_per_wall_s']} | "
+        m = med[row["program"]]
+        lines.append(f"| {row['program']} | {m['wall_s']:.3f} | {m['user_s']:.3f} | {m['sys_s']:.3f} | "
+                     f"{m['peak_mb']:.1f} | {row['rays']} | {row['mrays_per_wall_s']} | "
                      + " | ".join(row[f"speedup_vs_{b}"] for b in books) + " |")
     lines += ["", "`× vs book-…` is the book's median wall time over the program's: above 1, faster "
               "than the book. The issue's goal is ours ≥ 5× `book-native` in f32 and f64."]
