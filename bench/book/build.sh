@@ -84,10 +84,18 @@ fi
 
 build() {
     local out=$1; shift
+    local line="$CXX ${FLAGS[*]} $* ($("$CXX" --version | head -1))"
+    # Compile again only if the sources were fetched since or the command changed.
+    if [[ -x "$BUILD/$out" && "$BUILD/$out" -nt "$BUILD/stamp" \
+        && "$(cat "$BUILD/$out.cmd" 2>/dev/null)" == "$line" ]]; then
+        echo "book: $out is up to date" >&2
+        return
+    fi
     echo "book: $CXX ${FLAGS[*]} $* -> $out" >&2
     "$CXX" "${FLAGS[@]}" "$@" -I "$SRC/src" -o "$BUILD/$out.tmp" "$SRC/src/TheNextWeek/main.cc" \
         || die "$CXX failed building $out"
     mv "$BUILD/$out.tmp" "$BUILD/$out"
+    echo "$line" > "$BUILD/$out.cmd"
 }
 build book-native -march=native
 build book-release
