@@ -67,7 +67,7 @@ pub use float::{Float, lit};
 pub use image::{Encoding, Image, Image16};
 pub use light::{DirectionalLight, Light, PointLight, SpotLight};
 pub use material::{
-    BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, MaterialKind, Mirror,
+    BsdfSample, BsdfVisitor, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, MaterialKind, Mirror,
     Scatter, SharedMaterial,
 };
 pub use ray::Ray;
