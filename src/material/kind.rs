@@ -1,8 +1,9 @@
 //! [`MaterialKind`]: the enum fast path over the concrete materials.
 
 use super::{
-    BsdfSample, BsdfVisitor, Conductor, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror,
-    NormalMap, Plastic, RoughConductor, RoughDielectric, RoughPlastic, Scatter, ThinDielectric, TwoSided,
+    BsdfSample, BsdfVisitor, Conductor, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material,
+    Mirror, NormalMap, Plastic, RoughConductor, RoughDielectric, RoughPlastic, Scatter, ThinDielectric,
+    TwoSided,
 };
 use crate::float::Float;
 use crate::shape::Hit;
@@ -119,9 +120,10 @@ impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for MaterialKind<F> {
         each_material!(self, m => m.sample(hit, wo, rng); Shared(self).sample(&{ *hit }, wo, rng))
     }
 
-    /// One `match`: each of the specification's materials resolves itself; the others are
-    /// visited as one [`Shared`] material whose every answer is a call, so the renderer's
-    /// loop holds the shading of five kinds, not of twelve.
+    /// One `match`: each of the specification's materials resolves itself; the others,
+    /// behind an `Arc`, are visited as one material whose every answer is an out-of-line
+    /// call that matches on them, so the renderer's loop holds the shading of five kinds,
+    /// not of twelve.
     // The visit is inlined for `Shared` too: out of line, it took the visitor (the hit)
     // and returned the step through memory on every path.
     #[inline(always)]

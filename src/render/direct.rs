@@ -20,7 +20,12 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     /// light at infinity), computed as `(colour ∘ I)·(scale/d²)` from the material's
     /// [`Eval`](crate::material::Eval) (for the Lambertian `(A/π ∘ I)·(cos θ/d²)`, the
     /// specification's extra).
-    pub(super) fn direct_light<B: Material<F> + ?Sized>(&mut self, hit: &Hit<F>, material: &B, wo: Vec3<F>) -> Color<F> {
+    pub(super) fn direct_light<B: Material<F> + ?Sized>(
+        &mut self,
+        hit: &Hit<F>,
+        material: &B,
+        wo: Vec3<F>,
+    ) -> Color<F> {
         let mut sum = Color::zero();
         // Shadow rays leave on the normal's side; a light on the other side (seen through
         // a transmitting lobe) gets an origin on that side.

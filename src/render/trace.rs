@@ -330,7 +330,9 @@ struct Vertex<'t, 'a, F, S, M, R: ?Sized> {
     rng: &'t mut R,
 }
 
-impl<F: Float, S: Layout<F>, M: Material<F>, R: Rng + ?Sized> BsdfVisitor<F, R> for Vertex<'_, '_, F, S, M, R> {
+impl<F: Float, S: Layout<F>, M: Material<F>, R: Rng + ?Sized> BsdfVisitor<F, R>
+    for Vertex<'_, '_, F, S, M, R>
+{
     type Output = Step<F>;
 
     // Always inlined, whatever its size: called, it would take the hit through memory.
