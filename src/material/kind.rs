@@ -120,15 +120,30 @@ impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for MaterialKind<F> {
         each_material!(self, m => m.sample(hit, wo, rng); Shared(self).sample(&{ *hit }, wo, rng))
     }
 
-    /// One `match`: each of the specification's materials resolves itself; the others,
-    /// behind an `Arc`, are visited as one material whose every answer is an out-of-line
-    /// call that matches on them, so the renderer's loop holds the shading of five kinds,
-    /// not of twelve.
+    /// One `match`: each of the specification's three materials resolves itself; the
+    /// emitter and the materials behind an `Arc` are visited as one material whose every
+    /// answer is an out-of-line call that matches on them, so the renderer's loop holds
+    /// the shading of four kinds, not of twelve.
     // The visit is inlined for `Shared` too: out of line, it took the visitor (the hit)
-    // and returned the step through memory on every path.
+    // and returned the step through memory on every path. The emitter is `Shared`'s: its
+    // own shading (a second light loop, for a reflecting emitter) in the loop made the
+    // spec's materials' shading around it spill more.
     #[inline(always)]
     fn resolve<V: BsdfVisitor<F, R>>(&self, hit: &Hit<F>, visitor: V) -> V::Output {
-        each_material!(self, m => Scatter::<F, R>::resolve(m, hit, visitor); visitor.visit(&Shared(self)))
+        match self {
+            MaterialKind::Mirror(m) => Scatter::<F, R>::resolve(m, hit, visitor),
+            MaterialKind::Lambertian(m) => Scatter::<F, R>::resolve(m, hit, visitor),
+            MaterialKind::Dielectric(m) => Scatter::<F, R>::resolve(m, hit, visitor),
+            MaterialKind::Emissive(_)
+            | MaterialKind::NormalMap(_)
+            | MaterialKind::Conductor(_)
+            | MaterialKind::RoughConductor(_)
+            | MaterialKind::RoughDielectric(_)
+            | MaterialKind::ThinDielectric(_)
+            | MaterialKind::Plastic(_)
+            | MaterialKind::RoughPlastic(_)
+            | MaterialKind::TwoSided(_) => visitor.visit(&Shared(self)),
+        }
     }
 }
 
