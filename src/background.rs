@@ -108,9 +108,11 @@ impl<F: Float> Background<F> {
                 *horizon * (F::one() - s) + *zenith * s
             }
             Self::Map { map, rotation } => {
-                let local = turn_back(rotation, d.to_f64());
-                let [r, g, b] = map.radiance_at(EnvironmentMap::coordinates(local));
-                Vec3::from_f64(r, g, b)
+                // Written into a slot of this arm's own, out of line: the solid colour's
+                // and the sky's path, every escaped ray's, stays short.
+                let mut c = Color::zero();
+                map_color(map, rotation, d, &mut c);
+                c
             }
         }
     }
@@ -155,6 +157,15 @@ impl<F: Float> Background<F> {
 /// `rotation · d`.
 fn turn(r: &[[f64; 3]; 3], d: [f64; 3]) -> [f64; 3] {
     r.map(|row| row[0] * d[0] + row[1] * d[1] + row[2] * d[2])
+}
+
+/// The radiance of `map`, turned by `rotation`, along the unit direction `d`: what
+/// [`Background::color`] gives for a map.
+#[inline(never)]
+fn map_color<F: Float>(map: &EnvironmentMap, rotation: &[[f64; 3]; 3], d: Vec3<F>, out: &mut Color<F>) {
+    let local = turn_back(rotation, d.to_f64());
+    let [r, g, b] = map.radiance_at(EnvironmentMap::coordinates(local));
+    *out = Vec3::from_f64(r, g, b);
 }
 
 /// `rotationᵀ · d`, the inverse turn.

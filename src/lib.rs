@@ -67,8 +67,8 @@ pub use float::{Float, lit};
 pub use image::{Encoding, Image, Image16};
 pub use light::{DirectionalLight, Light, PointLight, SpotLight};
 pub use material::{
-    BsdfSample, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, MaterialKind, Mirror,
-    Scatter, SharedMaterial,
+    BsdfSample, BsdfVisitor, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, MaterialKind,
+    Mirror, Scatter, SharedMaterial,
 };
 pub use ray::Ray;
 pub use render::{

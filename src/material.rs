@@ -64,11 +64,14 @@ use std::sync::Arc;
 /// kind it is: point lights and sampled emitters light every material with a
 /// [non-delta](Lobes::has_non_delta) lobe through [`eval`](Material::eval), and weigh
 /// that light against the direction `sample` could have drawn through
-/// [`pdf`](Material::pdf) (multiple importance sampling). Adding a material is a type
-/// that answers them, and an arm in [`MaterialKind`] (`docs/ADDING_A_MATERIAL.md`).
+/// [`pdf`](Material::pdf) (multiple importance sampling). It asks them of the material
+/// that [`Scatter::resolve`] hands it at the hit: for an enum, the variant, found once a
+/// hit. Adding a material is a type that answers them, and an arm in [`MaterialKind`]
+/// (`docs/ADDING_A_MATERIAL.md`).
 ///
 /// No method has a default, so an enum that wraps the library's materials must pass on
-/// every answer or it does not compile. No method here draws random numbers, so none
+/// every answer or it does not compile (only [`Scatter::resolve`] has one, which is
+/// right for any material, and which an enum overrides to be fast). No method here draws random numbers, so none
 /// carries the generator's type: that is [`Scatter`]'s.
 ///
 /// # Directions and frames
@@ -115,7 +118,8 @@ pub trait Material<F: Float> {
 /// How a material draws the direction a ray leaves in: the one part of a material that
 /// needs random numbers, so the one that carries the generator's type `R`. `R` is a
 /// parameter of the trait, not of the method, so `dyn Scatter<F, R>` is a valid trait
-/// object ([`SharedMaterial`] uses `R = dyn Rng`).
+/// object ([`SharedMaterial`] uses `R = dyn Rng`; [`resolve`](Scatter::resolve), generic,
+/// is not part of it).
 pub trait Scatter<F: Float, R: Rng + ?Sized>: Material<F> {
     /// A direction for the ray that arrived from `wo`, with its weight
     /// `f·|cos θᵢ|/pdf`, its density and its lobe; `None` if the surface absorbs the
@@ -125,6 +129,36 @@ pub trait Scatter<F: Float, R: Rng + ?Sized>: Material<F> {
     /// closed-form warp (the pure warps take the numbers, as pbrt's do, and are tested
     /// without a generator), or as many as the specification's rejection method takes.
     fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>>;
+
+    /// Hands `visitor` the material that answers at `hit`, as a concrete type: the
+    /// renderer asks it every question of one hit (emission, lobes, `eval` per light,
+    /// `pdf`, `sample`) through static calls, where an enum would otherwise `match` on
+    /// its kind for each (as pbrt-v4's `GetBSDF` resolves a material once a hit).
+    ///
+    /// The material handed must answer every question at `hit` exactly as `self` does.
+    /// The default hands `self`, which is right for every material. An enum of materials
+    /// ([`MaterialKind`]) overrides it with one `match` that passes each variant on; a
+    /// material may also hand a simpler one (a [`Lambertian`] hands a matte surface of
+    /// its albedo looked up at `hit`, so a texture is read once a hit).
+    #[inline(always)]
+    fn resolve<V: BsdfVisitor<F, R>>(&self, hit: &Hit<F>, visitor: V) -> V::Output
+    where
+        Self: Sized,
+    {
+        let _ = hit;
+        visitor.visit(self)
+    }
+}
+
+/// What [`Scatter::resolve`] calls with the material that answers at a hit: the
+/// renderer's shading of that hit, monomorphised for each material it meets, so that
+/// adding a material never touches the renderer.
+pub trait BsdfVisitor<F: Float, R: Rng + ?Sized> {
+    /// What the visit gives back (the renderer's next step).
+    type Output;
+
+    /// Shades with `material`, whose answers at the hit are the resolved material's.
+    fn visit<B: Scatter<F, R> + ?Sized>(self, material: &B) -> Self::Output;
 }
 
 macro_rules! forward_material {

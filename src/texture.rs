@@ -55,19 +55,25 @@ impl<F: Float> Texture<F> {
     pub fn eval(&self, hit: &Hit<F>) -> Color<F> {
         match self {
             Self::Constant(c) => *c,
-            _ => self.eval_varying(hit.uv),
+            _ => {
+                // Written into a slot of this arm's own: returned, the value came back
+                // through the slot the constant's path shares, in memory on every path.
+                let mut value = Color::zero();
+                self.eval_varying(hit.uv, &mut value);
+                value
+            }
         }
     }
 
     /// [`Texture::eval`] of the kinds that vary, out of line and given `uv` alone: the
     /// constant's path stays short, and a caller's hit need not be in memory.
     #[inline(never)]
-    fn eval_varying(&self, uv: [F; 2]) -> Color<F> {
-        match self {
+    fn eval_varying(&self, uv: [F; 2], value: &mut Color<F>) {
+        *value = match self {
             Self::Constant(c) => *c,
             Self::Checkerboard(c) => c.eval(uv),
             Self::Image(i) => i.eval(uv),
-        }
+        };
     }
 
     /// The value at `hit` as one number: a constant's or a checkerboard's first channel (a

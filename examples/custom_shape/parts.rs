@@ -10,7 +10,7 @@ use raytrace::rand::Rng;
 use raytrace::sampling::{cosine_pdf, lambertian_direction};
 use raytrace::scene::Primitive;
 use raytrace::shape::{Coordinates, SurfaceSample, flat_surface};
-use raytrace::{BsdfSample, Emission, Eval, Hit, Intersection, Lobes};
+use raytrace::{BsdfSample, BsdfVisitor, Emission, Eval, Hit, Intersection, Lobes};
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -285,6 +285,11 @@ impl<F: Float> Material<F> for UserMaterial<F> {
 impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for UserMaterial<F> {
     fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
         each_material!(self, m => m.sample(hit, wo, rng))
+    }
+    // One `match` a hit: the renderer then asks the material found, not the enum. (Left
+    // out, the default hands the enum itself, and every question matches again.)
+    fn resolve<V: BsdfVisitor<F, R>>(&self, hit: &Hit<F>, visitor: V) -> V::Output {
+        each_material!(self, m => m.resolve(hit, visitor))
     }
 }
 

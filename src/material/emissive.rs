@@ -1,6 +1,7 @@
 //! A surface that gives off light: an area light.
 
-use super::{BsdfSample, Eval, Lambertian, Lobes, Material, Scatter};
+use super::lambertian::Diffuse;
+use super::{BsdfSample, Eval, Lobes, Material, Scatter};
 use crate::error::Result;
 use crate::float::Float;
 use crate::shape::Hit;
@@ -120,8 +121,8 @@ impl<F: Float> Emissive<F> {
     /// How it reflects: as a matte surface of its albedo. (Made when asked, so an emitter
     /// stores no sampler.)
     #[inline]
-    fn surface(&self) -> Lambertian<F> {
-        Lambertian::from_valid(self.albedo)
+    fn surface(&self) -> Diffuse<F> {
+        Diffuse::new(self.albedo)
     }
 
     /// Whether it reflects at all.
@@ -152,7 +153,7 @@ impl<F: Float> Material<F> for Emissive<F> {
         false
     }
 
-    /// None when black; otherwise a [`Lambertian`]'s.
+    /// None when black; otherwise a [`Lambertian`](super::Lambertian)'s.
     #[inline]
     fn lobes(&self) -> Lobes {
         if self.reflects() {
@@ -185,7 +186,7 @@ impl<F: Float> Material<F> for Emissive<F> {
 }
 
 impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Emissive<F> {
-    /// Absorbs the ray when black; otherwise scatters it as a [`Lambertian`] surface
+    /// Absorbs the ray when black; otherwise scatters it as a [`Lambertian`](super::Lambertian) surface
     /// with the specification's tangent-sphere sampler.
     #[inline]
     fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {

@@ -1,8 +1,9 @@
 //! [`MaterialKind`]: the enum fast path over the concrete materials.
 
 use super::{
-    BsdfSample, Conductor, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material, Mirror,
-    NormalMap, Plastic, RoughConductor, RoughDielectric, RoughPlastic, Scatter, ThinDielectric, TwoSided,
+    BsdfSample, BsdfVisitor, Conductor, Dielectric, Emission, Emissive, Eval, Lambertian, Lobes, Material,
+    Mirror, NormalMap, Plastic, RoughConductor, RoughDielectric, RoughPlastic, Scatter, ThinDielectric,
+    TwoSided,
 };
 use crate::float::Float;
 use crate::shape::Hit;
@@ -16,7 +17,10 @@ use std::sync::Arc;
 /// a wrapped material), behind an `Arc`, shared by every object that uses them, so a scene
 /// of the spec's materials keeps its small objects (and the enum is `Clone`, not `Copy`: a
 /// matte surface's albedo may be a texture).
+// A tag of its own: in f64 the enum otherwise kept its kind in a niche of the emitter's
+// flag, decoded with five more instructions at each `match`.
 #[derive(Clone, Debug, PartialEq)]
+#[repr(u32)]
 pub enum MaterialKind<F> {
     /// A [`Mirror`].
     Mirror(Mirror<F>),
@@ -98,11 +102,11 @@ impl<F: Float> Material<F> for MaterialKind<F> {
     }
     #[inline(always)]
     fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
-        each_material!(self, m => m.eval(hit, wo, wi); Shared(self).eval(*hit, wo, wi))
+        each_material!(self, m => m.eval(hit, wo, wi); Shared(self).eval(&{ *hit }, wo, wi))
     }
     #[inline(always)]
     fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
-        each_material!(self, m => m.pdf(hit, wo, wi); Shared(self).pdf(*hit, wo, wi))
+        each_material!(self, m => m.pdf(hit, wo, wi); Shared(self).pdf(&{ *hit }, wo, wi))
     }
     #[inline(always)]
     fn emits(&self) -> Option<Emission<F>> {
@@ -113,47 +117,71 @@ impl<F: Float> Material<F> for MaterialKind<F> {
 impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for MaterialKind<F> {
     #[inline(always)]
     fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
-        each_material!(self, m => m.sample(hit, wo, rng); {
-            // Written into a slot of this arm's own: the call's return slot would otherwise be
-            // the match's, and keep every material's sample in memory.
-            let mut sample = None;
-            Shared(self).sample(*hit, wo, rng, &mut sample);
-            sample
-        })
+        each_material!(self, m => m.sample(hit, wo, rng); Shared(self).sample(&{ *hit }, wo, rng))
+    }
+
+    /// One `match`: each of the specification's three materials resolves itself; the
+    /// emitter and the materials behind an `Arc` are visited as one material whose every
+    /// answer is an out-of-line call that matches on them, so the renderer's loop holds
+    /// the shading of four kinds, not of twelve.
+    // The visit is inlined for `Shared` too: out of line, it took the visitor (the hit)
+    // and returned the step through memory on every path. The emitter is `Shared`'s: its
+    // own shading (a second light loop, for a reflecting emitter) in the loop made the
+    // spec's materials' shading around it spill more.
+    #[inline(always)]
+    fn resolve<V: BsdfVisitor<F, R>>(&self, hit: &Hit<F>, visitor: V) -> V::Output {
+        match self {
+            MaterialKind::Mirror(m) => Scatter::<F, R>::resolve(m, hit, visitor),
+            MaterialKind::Lambertian(m) => Scatter::<F, R>::resolve(m, hit, visitor),
+            MaterialKind::Dielectric(m) => Scatter::<F, R>::resolve(m, hit, visitor),
+            MaterialKind::Emissive(_)
+            | MaterialKind::NormalMap(_)
+            | MaterialKind::Conductor(_)
+            | MaterialKind::RoughConductor(_)
+            | MaterialKind::RoughDielectric(_)
+            | MaterialKind::ThinDielectric(_)
+            | MaterialKind::Plastic(_)
+            | MaterialKind::RoughPlastic(_)
+            | MaterialKind::TwoSided(_) => visitor.visit(&Shared(self)),
+        }
     }
 }
 
 /// A [`MaterialKind`] asked out of line: every method one call that matches on every
 /// variant (the spec's too, so no arm is left out, though [`MaterialKind`] sends only the
-/// others here). The hit goes by value, a copy made in the branch that calls: by
-/// reference, the caller's hit would have to live in memory on every path.
+/// others here). A caller in the renderer's loop passes a copy of its hit made in the
+/// branch that calls: its own hit, by reference, would have to live in memory on every
+/// path.
 #[derive(Clone, Copy)]
 struct Shared<'a, F>(&'a MaterialKind<F>);
 
-impl<F: Float> Shared<'_, F> {
+impl<F: Float> Material<F> for Shared<'_, F> {
     #[inline(never)]
-    fn lobes(self) -> Lobes {
+    fn lobes(&self) -> Lobes {
         each_material!(self.0, m => m.lobes())
     }
     #[inline(never)]
-    fn reads_coordinates(self) -> bool {
+    fn reads_coordinates(&self) -> bool {
         each_material!(self.0, m => m.reads_coordinates())
     }
     #[inline(never)]
-    fn eval(self, hit: Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
-        each_material!(self.0, m => m.eval(&hit, wo, wi))
+    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        each_material!(self.0, m => m.eval(hit, wo, wi))
     }
     #[inline(never)]
-    fn pdf(self, hit: Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
-        each_material!(self.0, m => m.pdf(&hit, wo, wi))
+    fn pdf(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> F {
+        each_material!(self.0, m => m.pdf(hit, wo, wi))
     }
     #[inline(never)]
-    fn emits(self) -> Option<Emission<F>> {
+    fn emits(&self) -> Option<Emission<F>> {
         each_material!(self.0, m => m.emits())
     }
+}
+
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Shared<'_, F> {
     #[inline(never)]
-    fn sample<R: Rng + ?Sized>(self, hit: Hit<F>, wo: Vec3<F>, rng: &mut R, out: &mut Option<BsdfSample<F>>) {
-        *out = each_material!(self.0, m => m.sample(&hit, wo, rng));
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+        each_material!(self.0, m => m.sample(hit, wo, rng))
     }
 }
 

@@ -1,6 +1,6 @@
 //! An ideal matte (Lambertian) surface.
 
-use super::{BsdfSample, Emission, Eval, Lobes, Material, Scatter};
+use super::{BsdfSample, BsdfVisitor, Emission, Eval, Lobes, Material, Scatter};
 use crate::error::{Error, Field, Result};
 use crate::float::{Float, lit};
 use crate::sampling::{cosine_direction, cosine_pdf, lambertian_direction};
@@ -76,14 +76,6 @@ impl<F: Float> Lambertian<F> {
         })
     }
 
-    /// A matte surface of an albedo already checked, with the specification's sampler.
-    pub(super) fn from_valid(albedo: Color<F>) -> Self {
-        Self {
-            albedo: Texture::Constant(albedo),
-            sampler: CosineSampler::TangentSphere,
-        }
-    }
-
     /// The same surface drawing its directions with `sampler`.
     #[must_use]
     pub fn with_sampler(self, sampler: CosineSampler) -> Self {
@@ -112,15 +104,12 @@ fn shortest(x: f64) -> String {
 }
 
 impl<F: Float> Lambertian<F> {
-    /// The BSDF sample of direction `d` drawn about the unit normal `n` at `hit`: weight
-    /// `A` (`(A/π)·cos θ/(cos θ/π)`), density [`cosine_pdf`](crate::sampling::cosine_pdf).
-    #[inline]
-    pub(super) fn sample_toward(&self, hit: &Hit<F>, n: Vec3<F>, d: Vec3<F>) -> BsdfSample<F> {
-        BsdfSample {
-            direction: d,
-            weight: self.albedo.eval(hit),
-            pdf: cosine_pdf(n, d),
-            lobe: Lobes::REFLECTION | Lobes::DIFFUSE,
+    /// Its answers at `hit`: the albedo looked up there, once.
+    #[inline(always)]
+    fn at(&self, hit: &Hit<F>) -> Diffuse<F> {
+        Diffuse {
+            albedo: self.albedo.eval(hit),
+            sampler: self.sampler,
         }
     }
 }
@@ -141,11 +130,75 @@ impl<F: Float> Material<F> for Lambertian<F> {
     // Always inlined, as `sample`: called, they take the renderer's hit by reference,
     // which keeps every hit in memory.
     #[inline(always)]
+    fn eval(&self, hit: &Hit<F>, wo: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
+        self.at(hit).eval(hit, wo, wi)
+    }
+
+    #[inline]
+    fn pdf(&self, hit: &Hit<F>, _: Vec3<F>, wi: Vec3<F>) -> F {
+        cosine_pdf(hit.shading_normal, wi)
+    }
+
+    #[inline]
+    fn emits(&self) -> Option<Emission<F>> {
+        None
+    }
+}
+
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Lambertian<F> {
+    /// A cosine-distributed direction about the shading normal, by the sampler chosen
+    /// (the specification's rejection method draws a variable count of numbers).
+    #[inline(always)]
+    fn sample(&self, hit: &Hit<F>, wo: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
+        self.at(hit).sample(hit, wo, rng)
+    }
+
+    /// The surface with its albedo looked up at `hit`: a texture is read once a hit, not
+    /// once a question.
+    #[inline(always)]
+    fn resolve<V: BsdfVisitor<F, R>>(&self, hit: &Hit<F>, visitor: V) -> V::Output {
+        visitor.visit(&self.at(hit))
+    }
+}
+
+/// A matte surface at one hit, its albedo a colour: what a [`Lambertian`] (its texture
+/// looked up) and a reflecting [`Emissive`](super::Emissive) answer with.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Diffuse<F> {
+    albedo: Color<F>,
+    sampler: CosineSampler,
+}
+
+impl<F: Float> Diffuse<F> {
+    /// Albedo `A`, already checked, with the specification's sampler.
+    #[inline]
+    pub(super) fn new(albedo: Color<F>) -> Self {
+        Self {
+            albedo,
+            sampler: CosineSampler::TangentSphere,
+        }
+    }
+}
+
+impl<F: Float> Material<F> for Diffuse<F> {
+    /// No: its albedo is already looked up.
+    #[inline]
+    fn reads_coordinates(&self) -> bool {
+        false
+    }
+
+    #[inline]
+    fn lobes(&self) -> Lobes {
+        Lobes::REFLECTION | Lobes::DIFFUSE
+    }
+
+    /// `(A/π, cos θᵢ)`, `cos θᵢ = N·wi` with the shading normal; `None` below the surface.
+    #[inline(always)]
     fn eval(&self, hit: &Hit<F>, _: Vec3<F>, wi: Vec3<F>) -> Option<Eval<F>> {
         let cos = hit.shading_normal.dot(wi);
         if cos > F::zero() {
             Some(Eval {
-                colour: self.albedo.eval(hit) * (F::one() / lit::<F>(PI)),
+                colour: self.albedo * (F::one() / lit::<F>(PI)),
                 scale: cos,
             })
         } else {
@@ -164,9 +217,9 @@ impl<F: Float> Material<F> for Lambertian<F> {
     }
 }
 
-impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Lambertian<F> {
-    /// A cosine-distributed direction about the shading normal, by the sampler chosen
-    /// (the specification's rejection method draws a variable count of numbers).
+impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Diffuse<F> {
+    /// A cosine-distributed direction about the shading normal `n`, weight `A`
+    /// (`(A/π)·cos θ/(cos θ/π)`), density [`cosine_pdf`].
     #[inline(always)]
     fn sample(&self, hit: &Hit<F>, _: Vec3<F>, rng: &mut R) -> Option<BsdfSample<F>> {
         let n = hit.shading_normal;
@@ -174,6 +227,11 @@ impl<F: Float, R: Rng + ?Sized> Scatter<F, R> for Lambertian<F> {
             CosineSampler::TangentSphere => lambertian_direction(n, rng),
             CosineSampler::ClosedForm => cosine_direction(n, rng),
         };
-        Some(self.sample_toward(hit, n, d))
+        Some(BsdfSample {
+            direction: d,
+            weight: self.albedo,
+            pdf: cosine_pdf(n, d),
+            lobe: Lobes::REFLECTION | Lobes::DIFFUSE,
+        })
     }
 }

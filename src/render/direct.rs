@@ -5,7 +5,7 @@
 use super::trace::Tracer;
 use crate::float::Float;
 use crate::light::{Emitters, Incident, power_heuristic};
-use crate::material::{Lobes, Material, Scatter};
+use crate::material::{Lobes, Material};
 use crate::ray::Ray;
 use crate::sampling::uniform;
 use crate::scene::Layout;
@@ -20,7 +20,12 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     /// light at infinity), computed as `(colour ∘ I)·(scale/d²)` from the material's
     /// [`Eval`](crate::material::Eval) (for the Lambertian `(A/π ∘ I)·(cos θ/d²)`, the
     /// specification's extra).
-    pub(super) fn direct_light(&mut self, hit: &Hit<F>, material: &M, wo: Vec3<F>) -> Color<F> {
+    pub(super) fn direct_light<B: Material<F> + ?Sized>(
+        &mut self,
+        hit: &Hit<F>,
+        material: &B,
+        wo: Vec3<F>,
+    ) -> Color<F> {
         let mut sum = Color::zero();
         // Shadow rays leave on the normal's side; a light on the other side (seen through
         // a transmitting lobe) gets an origin on that side.
@@ -75,17 +80,17 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     ///
     /// Always draws four numbers (one to choose, three for the point), so the random
     /// stream does not depend on decisions f32 and f64 may take differently.
-    pub(super) fn sample_light<R>(
+    pub(super) fn sample_light<R, B>(
         &mut self,
         hit: Hit<F>,
-        material: &M,
+        material: &B,
         wo: Vec3<F>,
         emitters: &Emitters,
         rng: &mut R,
     ) -> Color<F>
     where
         R: Rng + ?Sized,
-        M: Scatter<F, R>,
+        B: Material<F> + ?Sized,
     {
         let choice = uniform(rng);
         let u = [uniform(rng), uniform(rng), uniform(rng)];
@@ -137,7 +142,13 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     /// [`sample_light`](Self::sample_light)'s background branch: a direction drawn from the
     /// background by its own density, the light it sends if no shadow ray to infinity is
     /// blocked.
-    fn sample_background(&mut self, hit: &Hit<F>, material: &M, wo: Vec3<F>, u: [f64; 2]) -> Color<F> {
+    fn sample_background<B: Material<F> + ?Sized>(
+        &mut self,
+        hit: &Hit<F>,
+        material: &B,
+        wo: Vec3<F>,
+        u: [f64; 2],
+    ) -> Color<F> {
         let background = self.scene.background();
         let Some((dir, pdf)) = background.sample(u) else {
             return Color::zero();

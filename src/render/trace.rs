@@ -3,7 +3,7 @@
 use super::settings::LightSampling;
 use crate::float::Float;
 use crate::light::{Emitters, power_heuristic};
-use crate::material::{Emission, Material, Scatter};
+use crate::material::{BsdfVisitor, Emission, Material, Scatter};
 use crate::ray::Ray;
 use crate::scene::{Layout, Object, Scene};
 use crate::shape::Hit;
@@ -162,7 +162,8 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
     /// back. Random numbers are drawn in one order: the light sample's four, then the
     /// material's. Only the material's [`lobes`](crate::Material::lobes), [`eval`](crate::Material::eval),
     /// [`pdf`](crate::Material::pdf), [`emits`](crate::Material::emits) and [`sample`](Scatter::sample)
-    /// are asked, never what kind of material it is.
+    /// are asked, of the material it [resolves](Scatter::resolve) to at the hit, never what
+    /// kind of material it is.
     #[inline(always)]
     pub(super) fn shade<R>(
         &mut self,
@@ -179,13 +180,44 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         let Some((hit, object)) = hit else {
             return Step::Done(self.escaped(ray, depth, arrival));
         };
-        // The hit goes by value to the calls below that are not inlined (emission, the
-        // light sample): a copy made in their branches keeps it out of memory on every
-        // other path (+4 % instructions on the spec's scenes when it escaped by reference).
         if depth >= self.max_depth {
             return Step::Done(Color::zero());
         }
-        let material = &object.material;
+        let vertex = Vertex {
+            tracer: self,
+            ray,
+            hit,
+            object,
+            depth,
+            arrival,
+            rng,
+        };
+        object.material.resolve(&hit, vertex)
+    }
+
+    /// [`Tracer::shade`] of a hit on `object` below `max_depth`, asking `material`, the
+    /// object's material [resolved](Scatter::resolve) at the hit: static calls, one
+    /// `match` on the material's kind a hit.
+    // The hit goes by value to the calls below that are not inlined (emission, the light
+    // sample): a copy made in their branches keeps it out of memory on every other path
+    // (+4 % instructions on the spec's scenes when it escaped by reference).
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn shade_with<R, B>(
+        &mut self,
+        material: &B,
+        ray: &Ray<F>,
+        hit: Hit<F>,
+        object: &Object<S, M>,
+        depth: u32,
+        arrival: Arrival<F>,
+        rng: &mut R,
+    ) -> Step<F>
+    where
+        R: Rng + ?Sized,
+        M: Material<F>,
+        B: Scatter<F, R> + ?Sized,
+    {
         let wo = -ray.direction;
         let emitters = self.scene.emitters();
         let mut direct = match material.emits() {
@@ -283,5 +315,38 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
             }
             _ => radiance,
         }
+    }
+}
+
+/// A hit waiting for its material: [`Tracer::shade`]'s state handed to
+/// [`Scatter::resolve`], which visits it with the material that answers there.
+struct Vertex<'t, 'a, F, S, M, R: ?Sized> {
+    tracer: &'t mut Tracer<'a, F, S, M>,
+    ray: &'t Ray<F>,
+    hit: Hit<F>,
+    object: &'t Object<S, M>,
+    depth: u32,
+    arrival: Arrival<F>,
+    rng: &'t mut R,
+}
+
+impl<F: Float, S: Layout<F>, M: Material<F>, R: Rng + ?Sized> BsdfVisitor<F, R>
+    for Vertex<'_, '_, F, S, M, R>
+{
+    type Output = Step<F>;
+
+    // Always inlined, whatever its size: called, it would take the hit through memory.
+    #[inline(always)]
+    fn visit<B: Scatter<F, R> + ?Sized>(self, material: &B) -> Step<F> {
+        let Self {
+            tracer,
+            ray,
+            hit,
+            object,
+            depth,
+            arrival,
+            rng,
+        } = self;
+        tracer.shade_with(material, ray, hit, object, depth, arrival, rng)
     }
 }

@@ -52,6 +52,7 @@ mod intersections;
 mod lambertian_chi2;
 mod light_files;
 mod lights;
+mod material_resolve;
 mod mesh_attributes;
 mod meshes;
 mod mis_unbiased;
