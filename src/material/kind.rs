@@ -17,10 +17,7 @@ use std::sync::Arc;
 /// a wrapped material), behind an `Arc`, shared by every object that uses them, so a scene
 /// of the spec's materials keeps its small objects (and the enum is `Clone`, not `Copy`: a
 /// matte surface's albedo may be a texture).
-// A tag of its own: in f64 the enum otherwise kept its kind in a niche of the emitter's
-// flag, decoded with five more instructions at each `match`.
 #[derive(Clone, Debug, PartialEq)]
-#[repr(u32)]
 pub enum MaterialKind<F> {
     /// A [`Mirror`].
     Mirror(Mirror<F>),

@@ -257,7 +257,7 @@ fn sizes_are_the_documented_ones() {
         crate::bvh::wide_node_bytes::<f64>(),
     );
     assert_eq!(f32s, (72, 180, 160));
-    assert_eq!(f64s, (144, 328, 256));
+    assert_eq!(f64s, (136, 328, 256));
 }
 
 /// The plain loop over the objects (`Acceleration::Linear`) and the packets in lanes a
