@@ -100,15 +100,16 @@ def _max_depth(path: Path, defines: dict) -> str:
     import xml.etree.ElementTree as ET
     roots = [ET.parse(p).getroot() for p in [path, *sorted(path.parent.rglob("*.xml"))]]
     defaults = {n.get("name"): n.get("value") for r in roots for n in r.iter("default")}
+    def resolved(value: str) -> str:
+        name = value[1:]
+        return str(defines.get(name, defaults.get(name, value))) if value.startswith("$") else value
+
     for root in roots:
         for node in root.iter():
-            if node.tag == "integrator" and node.get("type") == "direct":
+            if node.tag == "integrator" and resolved(node.get("type", "")) == "direct":
                 return "2"
             if node.tag == "integer" and node.get("name") == "max_depth":
-                value = node.get("value", "")
-                if value.startswith("$"):
-                    value = str(defines.get(value[1:], defaults.get(value[1:], value)))
-                return value
+                return resolved(node.get("value", ""))
     return "-1"
 
 

@@ -139,6 +139,15 @@ impl Importer {
         for (name, q) in &p.properties {
             let key = (q.at.file.clone(), q.at.line, name.clone());
             self.offered.push((key, p.label()));
+            if let Value::Transform(t) = &q.value
+                && t.steps.iter().any(|s| matches!(s, super::xml::Step::Rotate(a, _) if a[0] * a[0] + a[1] * a[1] + a[2] * a[2] != 1.0))
+            {
+                let what = format!(
+                    "`{name}` turns about an axis whose length is not 1: as in Mitsuba, the axis is used as \
+                     written (not normalised), so the map stretches as it turns"
+                );
+                self.warnings.push(format!("{} ({}, line {}): {what}", p.label(), q.at.file.display(), q.at.line));
+            }
         }
         self.read.push(format!(
             "{} ({}, line {})",

@@ -33,6 +33,16 @@ impl Importer {
                         );
                     }
                 }
+                if let Some(n) = self.number(p, "emitter_samples")?.filter(|n| *n > 1.0) {
+                    // direct.cpp gives a delta emitter's sample the weight 1, not 1/n.
+                    self.warn(
+                        p,
+                        format!(
+                            "`emitter_samples` {n}: Mitsuba 3.9.1 counts each point, spot and directional light \
+                             that many times (its image is {n} times as bright where they light); here once"
+                        ),
+                    );
+                }
                 Ok(Some(DIRECT_DEPTH))
             }
             "moment" => {
