@@ -37,6 +37,11 @@ SCENES = {
                    "full": dict(width=192, height=128, spp=512)}),
     "hello": ("mitsuba-data/scenes/hello.xml",
               {"quick": dict(width=64, height=48, spp=64), "full": dict(width=128, height=96, spp=256)}),
+    # The same with emitter_samples 1 in both: Mitsuba's direct integrator counts a point
+    # light emitter_samples times (README.md), so this is what the rest of hello is checked by.
+    "hello_emitter_samples_1": ("mitsuba-data/scenes/hello.xml",
+                                {"quick": dict(width=64, height=48, spp=64, emitter_samples=1),
+                                 "full": dict(width=128, height=96, spp=256, emitter_samples=1)}),
     "floating_sphere": ("mitsuba-data/tests/scenes/floating_sphere/test_directional_direct.xml",
                         {"quick": dict(width=48, height=48, spp=128),
                          "full": dict(width=96, height=96, spp=512)}),

@@ -81,7 +81,11 @@ impl Importer {
                 let mut flip_tex_coords = self.boolean(s, "flip_tex_coords")?;
                 // A file without normals: Mitsuba's smooth ones, held in memory under a name
                 // whose extension is no longer the file's (so its uv convention is set here).
-                let smooth = if face_normals { None } else { self.smooth_mesh(&file, &m) };
+                let smooth = if face_normals {
+                    None
+                } else {
+                    self.smooth_mesh(&file, &m)
+                };
                 let key = match smooth {
                     Some(name) => {
                         let flips = crate::mesh::flips_tex_coords(&self.located(&file));

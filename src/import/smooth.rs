@@ -69,9 +69,7 @@ pub(super) fn vertex_normals(positions: &[Vec3<f64>], triangles: &[[u32; 3]]) ->
             sum[t[k] as usize] = sum[t[k] as usize] + n * angle;
         }
     }
-    sum.into_iter()
-        .map(|n| n.try_normalize().unwrap_or(n))
-        .collect()
+    sum.into_iter().map(|n| n.try_normalize().unwrap_or(n)).collect()
 }
 
 /// The angle between `a` and `b`, in radians (zero if either is zero). From the chord
@@ -98,7 +96,14 @@ mod tests {
             .map(|i| Vec3::new([-1.0, 1.0][i & 1], [-1.0, 1.0][(i >> 1) & 1], [-1.0, 1.0][i >> 2]))
             .collect();
         // Each face's corners counter-clockwise seen from outside.
-        let faces = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+        let faces = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
         let triangles = faces
             .iter()
             .flat_map(|&[a, b, c, d]| [[a, b, c], [a, c, d]])

@@ -11,7 +11,9 @@ use crate::transform::Affine;
 /// Whether the `version` attribute `version` (`0.6.0`) is below 2: the file takes the
 /// upgrade. A missing or unreadable version is Mitsuba 3's.
 pub(super) fn below_2(version: Option<&str>) -> bool {
-    let major = version.and_then(|v| v.split('.').next()).and_then(|m| m.trim().parse::<u32>().ok());
+    let major = version
+        .and_then(|v| v.split('.').next())
+        .and_then(|m| m.trim().parse::<u32>().ok());
     major.is_some_and(|m| m < 2)
 }
 
@@ -68,8 +70,18 @@ pub(super) fn upgrade(plugin: &mut Plugin) {
         }
         None => None,
     };
-    let (uo, vo, us, vs) = (number("uoffset"), number("voffset"), number("uscale"), number("vscale"));
-    let Some(at) = [&uo, &vo, &us, &vs].into_iter().flatten().map(|(_, at)| at.clone()).next() else {
+    let (uo, vo, us, vs) = (
+        number("uoffset"),
+        number("voffset"),
+        number("uscale"),
+        number("vscale"),
+    );
+    let Some(at) = [&uo, &vo, &us, &vs]
+        .into_iter()
+        .flatten()
+        .map(|(_, at)| at.clone())
+        .next()
+    else {
         return;
     };
     let value = |v: &Option<(f64, _)>, default: f64| v.as_ref().map_or(default, |(x, _)| *x);

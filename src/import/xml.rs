@@ -174,7 +174,10 @@ impl Reader {
         if root.tag_name().name() != "scene" {
             return Err(at(root).error("the document's element must be <scene>"));
         }
-        let outer = std::mem::replace(&mut self.upgrade, super::upgrade::below_2(root.attribute("version")));
+        let outer = std::mem::replace(
+            &mut self.upgrade,
+            super::upgrade::below_2(root.attribute("version")),
+        );
         for node in root.children().filter(roxmltree::Node::is_element) {
             let here = at(node);
             match node.tag_name().name() {
@@ -322,11 +325,9 @@ impl Reader {
         for p in plugins {
             if p.tag == "ref" {
                 let id = p.id.clone().unwrap_or_default();
-                let mut target = self
-                    .ids
-                    .get(&id)
-                    .cloned()
-                    .ok_or_else(|| p.at.error(format!("<ref id=\"{id}\"> names no plugin of the scene")))?;
+                let mut target = self.ids.get(&id).cloned().ok_or_else(|| {
+                    p.at.error(format!("<ref id=\"{id}\"> names no plugin of the scene"))
+                })?;
                 *count += 1;
                 if depth >= MAX_REF_DEPTH || *count > MAX_REFS {
                     return Err(p.at.error(format!(

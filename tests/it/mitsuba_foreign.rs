@@ -58,8 +58,14 @@ fn an_area_emitter_declared_apart_lights_the_shape_that_refers_to_it() {
     assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
     // A name no plugin has, and a plugin that holds itself: errors at the `<ref>`'s line.
     for (name, body) in [
-        ("ref-unknown", "<shape type=\"sphere\">\n<ref id=\"nothing\"/></shape>"),
-        ("ref-cycle", "<bsdf type=\"twosided\" id=\"a\">\n<ref id=\"a\"/></bsdf>"),
+        (
+            "ref-unknown",
+            "<shape type=\"sphere\">\n<ref id=\"nothing\"/></shape>",
+        ),
+        (
+            "ref-cycle",
+            "<bsdf type=\"twosided\" id=\"a\">\n<ref id=\"a\"/></bsdf>",
+        ),
     ] {
         let (dir, got) = import_in(name, body);
         std::fs::remove_dir_all(&dir).unwrap();
@@ -74,12 +80,14 @@ fn an_area_emitter_declared_apart_lights_the_shape_that_refers_to_it() {
 #[test]
 fn direct_and_moment_integrators_are_read() {
     let area = r#"<shape type="sphere"><emitter type="area"/></shape>"#;
-    let direct = format!(r#"<integrator type="direct"><integer name="bsdf_samples" value="0"/></integrator>{area}"#);
+    let direct =
+        format!(r#"<integrator type="direct"><integer name="bsdf_samples" value="0"/></integrator>{area}"#);
     let imported = import("direct", &direct);
     assert_eq!(imported.file.render.max_depth, 2);
     let w = &imported.warnings;
     assert!(
-        w.iter().any(|w| w.contains("`bsdf_samples` 0") && w.contains("line 2")),
+        w.iter()
+            .any(|w| w.contains("`bsdf_samples` 0") && w.contains("line 2")),
         "{w:?}"
     );
     let moment = format!(
@@ -126,7 +134,11 @@ fn spheres_and_rectangles_in_a_shapegroup_are_placed_by_each_instance() {
     // (−1, 0, 0) turned 90° about y is (0, 0, 1), scaled by 2, moved up z by 3.
     let ([x, y, z], r) = spheres[1];
     assert!(x.abs() < 1e-12 && y.abs() < 1e-12 && (z - 5.0).abs() < 1e-12 && (r - 1.0).abs() < 1e-12);
-    let triangles = imported.file.objects.iter().filter(|o| matches!(o, ObjectSpec::Triangle { .. }));
+    let triangles = imported
+        .file
+        .objects
+        .iter()
+        .filter(|o| matches!(o, ObjectSpec::Triangle { .. }));
     assert_eq!(triangles.count(), 4);
 }
 
@@ -146,8 +158,13 @@ fn a_mesh_without_normals_gets_mitsubas_smooth_normals() {
     );
     let imported = got.unwrap();
     let f = &imported.file;
-    let ObjectSpec::Mesh { file, .. } = &f.objects[0] else { panic!() };
-    let mesh = f.assets().mesh(file).expect("the smoothed mesh is held in memory");
+    let ObjectSpec::Mesh { file, .. } = &f.objects[0] else {
+        panic!()
+    };
+    let mesh = f
+        .assets()
+        .mesh(file)
+        .expect("the smoothed mesh is held in memory");
     let normals = mesh.normals.as_ref().unwrap();
     for (p, n) in mesh.positions.iter().zip(normals) {
         // Carried back by the scale's transpose: (3x, y, z)/3 placed is the diagonal again.
@@ -196,7 +213,10 @@ fn a_diffuse_is_black_from_behind_and_a_twosided_one_is_not() {
     // within 5 standard errors (a 6·10⁻⁷ chance to fail if right; the seed is fixed).
     let twosided = format!(r#"<bsdf type="twosided">{diffuse}</bsdf>"#);
     let (m, se) = mean("twosided", &twosided);
-    assert!((m - 0.5).abs() < 5.0 * se.max(1e-12) || (m - 0.5).abs() < 1e-12, "{m} ± {se}");
+    assert!(
+        (m - 0.5).abs() < 5.0 * se.max(1e-12) || (m - 0.5).abs() < 1e-12,
+        "{m} ± {se}"
+    );
     let spec = import("spec", diffuse);
     let MaterialSpec::TwoSided(t) = &spec.file.materials["diffuse_line2"] else {
         panic!()
@@ -247,7 +267,10 @@ fn the_foreign_scenes_are_read() {
         for w in &imported.warnings {
             assert!(harmless.iter().any(|h| w.contains(h)), "{scene}: {w}");
         }
-        imported.file.build::<f32>().unwrap_or_else(|e| panic!("{scene}: {e}"));
+        imported
+            .file
+            .build::<f32>()
+            .unwrap_or_else(|e| panic!("{scene}: {e}"));
     }
 }
 
@@ -282,15 +305,33 @@ fn a_version_0_6_scene_is_upgraded_as_mitsuba_upgrades_it() {
     assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);
     let f = &imported.file;
     assert_eq!(f.render.max_depth, 4);
-    assert!(matches!(f.objects[0], ObjectSpec::Sphere { center: [1.0, 2.0, 3.0], .. }));
-    let MaterialSpec::Plastic(p) = &f.materials["p"] else { panic!() };
+    assert!(matches!(
+        f.objects[0],
+        ObjectSpec::Sphere {
+            center: [1.0, 2.0, 3.0],
+            ..
+        }
+    ));
+    let MaterialSpec::Plastic(p) = &f.materials["p"] else {
+        panic!()
+    };
     assert!(matches!(p.int_ior, raytrace::scene_file::IorSpec::Value(x) if x == 1.46));
     assert_eq!(p.diffuse_reflectance, TextureRef::Color([0.2; 3]));
     // The checkerboard's uv: scaled by (4, 1) after moved by (0, 0.5).
-    let MaterialSpec::TwoSided(d) = &f.materials["d"] else { panic!() };
-    let MaterialSpec::Lambertian { albedo: TextureRef::Inline(t) } = d.front.as_ref() else { panic!() };
+    let MaterialSpec::TwoSided(d) = &f.materials["d"] else {
+        panic!()
+    };
+    let MaterialSpec::Lambertian {
+        albedo: TextureRef::Inline(t),
+    } = d.front.as_ref()
+    else {
+        panic!()
+    };
     let text = format!("{t:?}");
-    assert!(text.contains("PerAxis([4.0, 1.0])") && text.contains("offset: [0.0, 0.5]"), "{text}");
+    assert!(
+        text.contains("PerAxis([4.0, 1.0])") && text.contains("offset: [0.0, 0.5]"),
+        "{text}"
+    );
 }
 
 /// Mitsuba 3.9.1 does not normalise a `<rotate>` axis: `scenes/hello.xml` turns its teapot
@@ -321,7 +362,10 @@ fn a_rotation_axis_is_used_as_written_as_in_mitsuba() {
         }
     }
     assert!(
-        imported.warnings.iter().any(|w| w.contains("length is not 1") && w.contains("line 4")),
+        imported
+            .warnings
+            .iter()
+            .any(|w| w.contains("length is not 1") && w.contains("line 4")),
         "{:?}",
         imported.warnings
     );
