@@ -2,17 +2,21 @@
 //! into a [`SceneFile`], so that everything a scene file gets (checked values, errors at
 //! their place, tiles, precision advice) holds for them too.
 //!
-//! Read: `<default>` and `$name` (and `-D name=value`), `<include>`, `<path>`, `id` and
-//! `<ref>`; transforms (`lookat`, `translate`, `rotate`, `scale`, `matrix`); shapes `obj`,
-//! `ply`, `sphere`, `disk`, `rectangle`, `cube`, `shapegroup` (of `obj` and `ply`) and `instance`;
-//! every BSDF this renderer has (`diffuse`,
+//! Read (scene versions 2 and 3, and 0.x upgraded as Mitsuba 3 upgrades it: `upgrade.rs`):
+//! `<default>` and `$name` (and `-D name=value`), `<include>`, `<path>`, `id` and `<ref>`
+//! (to a plugin defined before or after it); transforms (`lookat`, `translate`, `rotate`,
+//! `scale`, `matrix`); shapes `obj`, `ply`, `sphere`, `disk`, `rectangle`, `cube`,
+//! `shapegroup` (of those) and `instance`; every BSDF this renderer has (`diffuse`,
 //! `conductor`, `roughconductor`, `dielectric`, `roughdielectric`, `thindielectric`,
 //! `plastic`, `roughplastic`, `twosided`, `normalmap`); textures `bitmap` and
-//! `checkerboard`; emitters `area`, `point`, `constant`, `envmap`, `directional`, `spot`;
-//! sensors `perspective` and `thinlens` (`fov`, `fov_axis`); `hdrfilm`, the `independent`
-//! sampler and the `path` integrator. Anything else is an error naming the plugin, its
-//! file and line; what is rendered with a difference (another reconstruction filter, an
-//! unbounded depth) is a warning naming it, and so is a parameter of a plugin read that
+//! `checkerboard`; emitters `area` (on a shape, or declared apart and referred to),
+//! `point`, `constant`, `envmap`, `directional`, `spot`; sensors `perspective` and
+//! `thinlens` (`fov`, `fov_axis`); `hdrfilm`, the `independent` sampler and the `path`,
+//! `direct` (as `path` of depth 2) and `moment` (as the integrator it holds) integrators.
+//! A mesh whose file has no normals gets Mitsuba's smooth ones (`smooth.rs`); a `diffuse`
+//! is one-sided, as Mitsuba's (black behind). Anything else is an error naming the plugin,
+//! its file and line; what is rendered with a difference (another reconstruction filter,
+//! an unbounded depth) is a warning naming it, and so is a parameter of a plugin read that
 //! nothing reads (unknown, or misspelt): the render is as if it were absent.
 //!
 //! Mitsuba counts path segments in `max_depth`, this renderer bounces: a scene lit only by
@@ -32,10 +36,13 @@ mod convert;
 mod exact;
 mod extension;
 pub mod gltf;
+mod integrator;
 mod sensor;
 mod shading;
 mod shape;
+mod smooth;
 mod transform;
+mod upgrade;
 pub mod xml;
 
 pub use convert::Imported;

@@ -104,13 +104,18 @@ class Writer:
 
     # -- materials ------------------------------------------------------------------------
 
-    def bsdf(self, m: dict, id_: str | None = None):
+    def bsdf(self, m: dict, id_: str | None = None, face: bool = False):
+        """A material; `face`: one face of a `twosided`."""
         ident = f' id="{id_}"' if id_ else ""
         kind = m["type"]
         plain = {"conductor": "conductor", "rough_conductor": "roughconductor",
                  "rough_dielectric": "roughdielectric", "thin_dielectric": "thindielectric",
                  "plastic": "plastic", "rough_plastic": "roughplastic"}
-        if kind == "lambertian":
+        if kind == "lambertian" and not face:
+            # Mitsuba's diffuse is one-sided, the matte material reflects from both faces.
+            self.open(f'<bsdf type="twosided"{ident}>')
+            self.bsdf(m, face=True)
+        elif kind == "lambertian":
             self.open(f'<bsdf type="diffuse"{ident}>')
             self.colour("reflectance", m["albedo"])
         elif kind == "mirror":
@@ -144,9 +149,9 @@ class Writer:
                     self.colour(key, value, scalar=key.startswith("alpha"))
         elif kind == "two_sided":
             self.open(f'<bsdf type="twosided"{ident}>')
-            self.bsdf(m["front"])
+            self.bsdf(m["front"], face=True)
             if "back" in m:
-                self.bsdf(m["back"])
+                self.bsdf(m["back"], face=True)
         elif kind == "normal_map":
             self.open(f'<bsdf type="normalmap"{ident}>')
             # The scene file's normal map, in Mitsuba's words (its defaults are true).

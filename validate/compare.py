@@ -5,6 +5,7 @@ analytic checks, into a table. Run through validate/run.sh (which sets up Mitsub
     python validate/compare.py                    # full: every scene, 128 px, 1024 spp
     python validate/compare.py my_scene.toml ...  # those scenes (with the mode's settings)
     python validate/compare.py scene.xml ...      # an XML file in both renderers, as it is
+    python validate/compare.py --foreign          # the scenes from elsewhere (validate/foreign/)
 
 Exit status 0 only if every comparison passes, both analytic checks pass, and every
 injected mistake is rejected. Statistics: stats.py; what is converted how: convert.py.
@@ -22,6 +23,7 @@ import mitsuba as mi
 mi.set_variant("scalar_rgb")  # float64 sphere intersections: the stronger reference
 
 import analytic  # noqa: E402
+import foreign_check  # noqa: E402
 import ours  # noqa: E402
 import renders  # noqa: E402
 import report  # noqa: E402
@@ -175,6 +177,9 @@ def main() -> int:
     ap.add_argument("--xml-only", action="store_true",
                     help="only the XML files (validate/xml/) and the analytic checks; the full "
                          "mode's results into validate/results/xml")
+    ap.add_argument("--foreign", action="store_true",
+                    help="only the scenes from elsewhere (validate/foreign/), into "
+                         "validate/results/foreign (the full mode runs them too)")
     args = ap.parse_args()
     mode = "quick" if args.quick else "full"
     cfg = MODES[mode]
@@ -182,6 +187,8 @@ def main() -> int:
     if args.xml_only and not args.out:
         out = out / "xml"
     work = args.work / mode
+    if args.foreign:
+        return 0 if foreign_check.main_foreign(mode, work, args.out or out / "foreign") else 1
     given = [Path(p).resolve() for p in args.scenes]
     paths = [p for p in given if p.suffix != ".xml"] or (
         [] if given or args.xml_only else
@@ -210,6 +217,8 @@ def main() -> int:
                       skipped=[] if args.scenes or cfg["scenes"] or args.xml_only
                       else skipped_scenes())
     print(f"{'PASS' if ok else 'FAIL'}: results in {out} ({elapsed:.0f} s)")
+    if mode == "full" and not args.scenes and not args.xml_only:
+        ok = foreign_check.main_foreign(mode, work, out / "foreign") and ok
     return 0 if ok else 1
 
 

@@ -8,6 +8,7 @@
 #   bash validate/run.sh my_scene.toml    # any scene file, with the full mode's settings
 #   bash validate/run.sh scene.xml        # any Mitsuba XML file, read by both renderers
 #   bash validate/run.sh --quick my.toml  # ... or the quick mode's
+#   bash validate/run.sh --foreign        # the scenes from elsewhere (validate/foreign/) alone
 #
 # Needs python3 (3.11 or later, for tomllib) with venv and pip, and the Rust toolchain.
 # Only Mitsuba's scalar_rgb variant is used here: it needs no LLVM (validate/bench.py does).

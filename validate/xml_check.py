@@ -50,10 +50,10 @@ PRECISIONS = {"quick": ("f64",), "full": ("f32", "f64")}
 
 
 def _key(path: Path, defines: dict, *extra) -> str:
-    """A cache key of the scene's text (and every XML file beside it: includes), the
-    defines and the rest."""
+    """A cache key of the scene's text (and every XML file beside it or below: includes),
+    the defines and the rest."""
     h = hashlib.sha256()
-    for p in sorted(path.parent.glob("*.xml")):
+    for p in sorted(path.parent.rglob("*.xml")):
         h.update(p.read_bytes())
     h.update(repr((str(path), sorted(defines.items()), extra)).encode())
     return h.hexdigest()[:16]
@@ -87,33 +87,45 @@ def ours_image(path: Path, defines: dict, seed: int, precision: str, work: Path,
         for k, v in defines.items():
             cmd += ["-D", f"{k}={v}"]
         t = time.perf_counter()
-        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         times.append({"renderer": f"ours {precision}", "scene": f"xml/{path.stem}",
                       "seconds": time.perf_counter() - t})
     return ours.read_pfm(out)
 
 
 def _max_depth(path: Path, defines: dict) -> str:
-    """The file's max_depth as written (both renderers read the same number)."""
+    """The file's max_depth as written (both renderers read the same number): in it or in
+    an XML file beside it or below (an include), a $name resolved by `defines` or its
+    <default>; `direct` is 2."""
     import xml.etree.ElementTree as ET
-    for node in ET.parse(path).getroot().iter("integer"):
-        if node.get("name") == "max_depth":
-            value = node.get("value", "")
-            return defines.get(value[1:], value) if value.startswith("$") else value
+    roots = [ET.parse(p).getroot() for p in [path, *sorted(path.parent.rglob("*.xml"))]]
+    defaults = {n.get("name"): n.get("value") for r in roots for n in r.iter("default")}
+    def resolved(value: str) -> str:
+        name = value[1:]
+        return str(defines.get(name, defaults.get(name, value))) if value.startswith("$") else value
+
+    for root in roots:
+        for node in root.iter():
+            if node.tag == "integrator" and resolved(node.get("type", "")) == "direct":
+                return "2"
+            if node.tag == "integer" and node.get("name") == "max_depth":
+                return resolved(node.get("value", ""))
     return "-1"
 
 
-def compare(path: Path, defines: dict, work: Path, rows, pngs, times, precisions=("f32", "f64")):
-    """Both renderers on one XML file, each precision of ours against Mitsuba; the rows and
-    the difference images go into the report. Returns Mitsuba's two images."""
+def compare(path: Path, defines: dict, work: Path, rows, pngs, times, precisions=("f32", "f64"),
+            name: str | None = None):
+    """Both renderers on one XML file, each precision of ours against Mitsuba; the rows
+    (named `name`, default `xml/STEM`) and the difference images go into the report.
+    Returns Mitsuba's two images."""
     m = [mitsuba_image(path, defines, s, work, times) for s in SEEDS]
-    name, depth = f"xml/{path.stem}", _max_depth(path, defines)
+    name, depth = name or f"xml/{path.stem}", _max_depth(path, defines)
     for prec in precisions:
         o = [ours_image(path, defines, s, prec, work, times) for s in SEEDS]
         v = stats.compare(o[0], o[1], m[0], m[1])
         rows.append(report.row_named("agreement", name, depth, prec, "", o[0].shape,
                                      defines.get("spp", "file's"), depth, v))
-        pngs.append((f"xml-{path.stem}-{prec}", o, m, v))
+        pngs.append((f"{name.replace('/', '-')}-{prec}", o, m, v))
     return m
 
 

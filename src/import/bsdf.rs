@@ -38,11 +38,18 @@ impl Importer {
             }
         };
         Ok(match b.kind.as_str() {
-            "diffuse" => MaterialSpec::Lambertian {
-                albedo: self
-                    .texture(b, "reflectance")?
-                    .unwrap_or(TextureRef::Color([0.5; 3])),
-            },
+            // Mitsuba's `diffuse` reflects from its front face only, this renderer's matte
+            // material from both: one-sided, it is black behind (as Mitsuba's, it absorbs).
+            "diffuse" => MaterialSpec::TwoSided(TwoSidedSpec {
+                front: Box::new(MaterialSpec::Lambertian {
+                    albedo: self
+                        .texture(b, "reflectance")?
+                        .unwrap_or(TextureRef::Color([0.5; 3])),
+                }),
+                back: Some(Box::new(MaterialSpec::Lambertian {
+                    albedo: TextureRef::Color([0.0; 3]),
+                })),
+            }),
             "conductor" => MaterialSpec::Conductor(ConductorSpec {
                 material: self.text(b, "material")?,
                 eta: self.triple(b, "eta")?,
@@ -133,10 +140,16 @@ impl Importer {
                     [front, back] => (front, Some(back)),
                     _ => return Err(b.at.error(format!("{}: holds one or two <bsdf>s", b.label()))),
                 };
-                MaterialSpec::TwoSided(TwoSidedSpec {
-                    front: Box::new(self.material(front)?),
-                    back: back.map(|p| self.material(p).map(Box::new)).transpose()?,
-                })
+                let front = self.face_material(front)?;
+                match back.map(|p| self.face_material(p)).transpose()? {
+                    // The matte material reflects from both faces already: the very material
+                    // of a scene file's `lambertian` (its XML twin is written so).
+                    None if matches!(front, MaterialSpec::Lambertian { .. }) => front,
+                    back => MaterialSpec::TwoSided(TwoSidedSpec {
+                        front: Box::new(front),
+                        back: back.map(Box::new),
+                    }),
+                }
             }
             "normalmap" => {
                 let Some(inner) = b.children.iter().find(|c| c.tag == "bsdf") else {
@@ -160,6 +173,15 @@ impl Importer {
             }
             "raytrace_mirror" => self.mirror(b)?,
             other => return Err(self.unsupported(b, other)),
+        })
+    }
+
+    /// The material of the `<bsdf>` `b` on one face of a `twosided`: a `diffuse` is the
+    /// matte material itself (not black behind: the `twosided` gives its back).
+    fn face_material(&mut self, b: &Plugin) -> Result<MaterialSpec> {
+        Ok(match self.material(b)? {
+            MaterialSpec::TwoSided(t) if b.kind == "diffuse" => *t.front,
+            other => other,
         })
     }
 

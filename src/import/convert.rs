@@ -6,7 +6,7 @@
 use super::xml::{Plugin, Value};
 use crate::error::{Error, Result};
 
-use crate::scene_file::{BackgroundSpec, LightSpec, SceneFile};
+use crate::scene_file::{Assets, BackgroundSpec, LightSpec, SceneFile};
 use crate::transform::Affine;
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
@@ -53,8 +53,12 @@ pub(super) struct Importer {
     /// Set by an area emitter, the sampled environment: Mitsuba's `max_depth` then counts
     /// as the renderer's does.
     pub(super) lights_on_surfaces: bool,
-    /// Each `shapegroup` by id: its meshes' `[meshes]` names, their own maps, materials.
-    pub(super) groups: BTreeMap<String, Vec<(String, Affine, String)>>,
+    /// Each `shapegroup` by id: its shapes, each placed by every instance of the group.
+    pub(super) groups: BTreeMap<String, Vec<super::shape::Part>>,
+    /// Meshes held in memory: those given Mitsuba's smooth normals (`smooth.rs`).
+    pub(super) assets: Assets,
+    /// How many meshes were smoothed: each gets its own name.
+    pub(super) smoothed: usize,
 }
 
 impl Importer {
@@ -68,6 +72,8 @@ impl Importer {
             asked: Asked::default(),
             lights_on_surfaces: false,
             groups: BTreeMap::new(),
+            assets: Assets::default(),
+            smoothed: 0,
         }
     }
 
@@ -83,6 +89,8 @@ impl Importer {
             match p.tag.as_str() {
                 "sensor" => self.sensor(p)?,
                 "shape" => self.shape(p)?,
+                // Made where a shape refers to it by its id, as Mitsuba makes it.
+                "emitter" if p.kind == "area" && p.id.is_some() => {}
                 "emitter" => self.emitter(p)?,
                 "bsdf" => {
                     self.named_material(p)?;
@@ -90,10 +98,7 @@ impl Importer {
                 "texture" => {
                     self.read(p);
                 }
-                "integrator" if p.kind == "path" => {
-                    self.read(p);
-                    max_depth = self.number(p, "max_depth")?;
-                }
+                "integrator" => max_depth = self.integrator(p)?,
                 _ => return Err(self.unsupported(p, &p.kind)),
             }
         }
@@ -122,6 +127,7 @@ impl Importer {
             );
         }
         self.unread();
+        self.file.set_assets(std::mem::take(&mut self.assets));
         Ok(Imported {
             file: self.file,
             read: self.read,
@@ -133,6 +139,15 @@ impl Importer {
         for (name, q) in &p.properties {
             let key = (q.at.file.clone(), q.at.line, name.clone());
             self.offered.push((key, p.label()));
+            if let Value::Transform(t) = &q.value
+                && t.steps.iter().any(|s| matches!(s, super::xml::Step::Rotate(a, _) if a[0] * a[0] + a[1] * a[1] + a[2] * a[2] != 1.0))
+            {
+                let what = format!(
+                    "`{name}` turns about an axis whose length is not 1: as in Mitsuba, the axis is used as \
+                     written (not normalised), so the map stretches as it turns"
+                );
+                self.warnings.push(format!("{} ({}, line {}): {what}", p.label(), q.at.file.display(), q.at.line));
+            }
         }
         self.read.push(format!(
             "{} ({}, line {})",

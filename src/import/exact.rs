@@ -82,8 +82,9 @@ fn scale_turn_move(steps: &[Step]) -> Option<([f64; 3], [f64; 3], [f64; 3])> {
                 0
             }
             Step::Rotate(axis, angle) => {
-                // Mitsuba turns about the unit axis: any positive length along one of them.
-                let along = axis.iter().position(|a| *a > 0.0)?;
+                // A turn about x, y or z only for a unit axis: Mitsuba does not normalise
+                // one of another length (its map then stretches too: `transform.rs`).
+                let along = axis.iter().position(|a| *a == 1.0)?;
                 if axis.iter().enumerate().any(|(i, a)| i != along && *a != 0.0) {
                     return None;
                 }
@@ -113,7 +114,7 @@ mod tests {
         let steps = [
             Step::Scale([2.0; 3]),
             Step::Rotate([1.0, 0.0, 0.0], 90.0),
-            Step::Rotate([0.0, 0.0, 3.0], -17.0),
+            Step::Rotate([0.0, 0.0, 1.0], -17.0),
             Step::Translate([1.0, 2.0, 3.0]),
         ];
         assert_eq!(
@@ -135,6 +136,7 @@ mod tests {
             vec![x.clone(), x.clone()],
             vec![Step::Rotate([1.0, 1.0, 0.0], 10.0)],
             vec![Step::Rotate([-1.0, 0.0, 0.0], 10.0)],
+            vec![Step::Rotate([0.0, 3.0, 0.0], 10.0)],
             vec![Step::LookAt([[0.0; 3], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]])],
         ] {
             assert_eq!(scale_turn_move(&steps), None, "{steps:?}");

@@ -1,9 +1,7 @@
-//! Where a shape is shaded otherwise than in Mitsuba 3, a warning. Mitsuba shades a mesh
-//! whose file holds no normals smooth (the normals of the faces at each shared corner
-//! averaged) unless its `face_normals` is true, and an instance with its file's normals;
-//! this renderer shades the first, and every instance, with its faces' normals (found by the
-//! cross-check: validate/xml/outdoor.xml's crates, 30 standard errors apart). Mitsuba's
-//! `rectangle` and `cube` have uv over each face; here each triangle has its own.
+//! Where a shape is shaded otherwise than in Mitsuba 3, a warning. Mitsuba shades an
+//! instance with its file's normals, this renderer with its faces' normals. Mitsuba's
+//! `rectangle` and `cube` have uv over each face; here each triangle has its own. (A mesh
+//! whose file has no normals is shaded smooth in both: `smooth.rs`.)
 
 use super::convert::Importer;
 use super::xml::Plugin;
@@ -16,21 +14,17 @@ use std::path::Path;
 const PLY_HEADER_LINES: usize = 1000;
 
 impl Importer {
-    /// A warning if the mesh shape `s`, reading `file` (`instanced` in a shapegroup), is
-    /// shaded with other normals than Mitsuba's; none if it says `face_normals = true`.
-    pub(super) fn shading_normals(&mut self, s: &Plugin, file: &str, instanced: bool) -> Result<()> {
-        if self.boolean(s, "face_normals")? == Some(true) {
-            return Ok(());
+    /// A warning for the mesh shape `s` of a shapegroup unless it says `face_normals =
+    /// true`: an instance is shaded with its faces' normals here.
+    pub(super) fn instance_normals(&mut self, s: &Plugin) -> Result<()> {
+        if self.boolean(s, "face_normals")? != Some(true) {
+            self.warn(
+                s,
+                "an instance is shaded with its faces' normals here, in Mitsuba with its file's (or \
+                 smooth ones); face_normals = true renders it alike in both"
+                    .into(),
+            );
         }
-        let why = if instanced {
-            "an instance is shaded with its faces' normals here, in Mitsuba with its file's"
-        } else if declares_normals(&self.located(file)) == Some(false) {
-            "its file has no normals: Mitsuba shades it smooth (normals averaged at shared \
-             corners), this renderer with its faces' normals"
-        } else {
-            return Ok(());
-        };
-        self.warn(s, format!("{why}; face_normals = true renders it alike in both"));
         Ok(())
     }
 }
@@ -62,7 +56,7 @@ impl Importer {
 /// Whether the OBJ or PLY file at `path` holds vertex normals (`vn` lines; `nx` among a PLY
 /// header's properties); `None` if it cannot be read (the scene's build says why) or is
 /// of neither kind.
-fn declares_normals(path: &Path) -> Option<bool> {
+pub(super) fn declares_normals(path: &Path) -> Option<bool> {
     let extension = path.extension()?.to_str()?.to_ascii_lowercase();
     let mut lines = BufReader::new(std::fs::File::open(path).ok()?).split(b'\n');
     match extension.as_str() {

@@ -1,6 +1,7 @@
 //! Mitsuba 3's `<shape>` plugins as objects: meshes (`obj`, `ply`, placed by any map),
-//! spheres, disks, the unit `rectangle` and `cube` as triangles, and `shapegroup`s placed by
-//! `instance`s. A shape's `<bsdf>` names its material; an `area` emitter makes it emissive.
+//! spheres, disks, the unit `rectangle` and `cube` as triangles, and `shapegroup`s (of
+//! those) placed by `instance`s. A shape's `<bsdf>` names its material; an `area` emitter
+//! makes it emissive.
 
 use super::convert::Importer;
 use super::xml::Plugin;
@@ -40,7 +41,10 @@ impl Importer {
                         );
                         None
                     }
-                    None => Some([0.5; 3]),
+                    // Mitsuba gives an emitter without a BSDF a black one (a shape without
+                    // either a diffuse of 0.5): found by validate/foreign's point cloud,
+                    // whose lamp lit its floor a second time here.
+                    None => None,
                 };
                 let name = format!("area_line{}", e.at.line);
                 let radiance = self.triple(e, "radiance")?.unwrap_or([1.0; 3]);
@@ -73,22 +77,48 @@ impl Importer {
                     .text(s, "filename")?
                     .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
                 let placed = self.placed(s)?;
-                self.shading_normals(s, &file, false)?;
+                let face_normals = self.boolean(s, "face_normals")?.unwrap_or(false);
+                let mut flip_tex_coords = self.boolean(s, "flip_tex_coords")?;
+                // A file without normals: Mitsuba's smooth ones, held in memory under a name
+                // whose extension is no longer the file's (so its uv convention is set here).
+                let smooth = if face_normals {
+                    None
+                } else {
+                    self.smooth_mesh(&file, &m)
+                };
+                let key = match smooth {
+                    Some(name) => {
+                        let flips = crate::mesh::flips_tex_coords(&self.located(&file));
+                        flip_tex_coords = Some(flip_tex_coords.unwrap_or(flips));
+                        name
+                    }
+                    None => self.path_of(&file),
+                };
                 self.file.objects.push(ObjectSpec::Mesh {
-                    file: self.path_of(&file),
+                    file: key,
                     scale: placed.scale,
                     rotate: placed.rotate,
                     translate: placed.translate,
                     material,
-                    face_normals: self.boolean(s, "face_normals")?.unwrap_or(false),
-                    flip_tex_coords: self.boolean(s, "flip_tex_coords")?,
+                    face_normals,
+                    flip_tex_coords,
                     matrix: placed.matrix,
                 });
             }
+            "raytrace_plane" | "raytrace_triangle" => self.flat_shape(s, material)?,
+            _ => self.unit_shape(s, material, &m)?,
+        }
+        Ok(())
+    }
+
+    /// A `sphere`, `disk`, `rectangle` or `cube` placed by `m` (its `to_world`, or that
+    /// then an instance's).
+    fn unit_shape(&mut self, s: &Plugin, material: String, m: &Affine) -> Result<()> {
+        match s.kind.as_str() {
             "sphere" => {
                 let c = self.triple(s, "center")?.unwrap_or([0.0; 3]);
                 let radius = self.number(s, "radius")?.unwrap_or(1.0);
-                let scale = uniform_scale(&m).ok_or_else(|| {
+                let scale = uniform_scale(m).ok_or_else(|| {
                     s.at.error("sphere: `to_world` may only scale uniformly, turn and move it")
                 })?;
                 self.file.objects.push(ObjectSpec::Sphere {
@@ -100,8 +130,8 @@ impl Importer {
             "disk" => {
                 // `flip_normals` turns the unit disk over first: Mitsuba's `to_world·scale(1, 1, −1)`.
                 let m = match self.boolean(s, "flip_normals")? {
-                    Some(true) => Affine::scale([1.0, 1.0, -1.0]).then(&m),
-                    _ => m,
+                    Some(true) => Affine::scale([1.0, 1.0, -1.0]).then(m),
+                    _ => *m,
                 };
                 self.file.objects.push(ObjectSpec::Disk {
                     center: [0.0; 3],
@@ -124,16 +154,25 @@ impl Importer {
                     });
                 }
             }
-            "raytrace_plane" | "raytrace_triangle" => self.flat_shape(s, material)?,
             other => return Err(self.unsupported(s, other)),
         }
         Ok(())
     }
 }
 
+/// A shape of a `shapegroup`, placed by each `instance` of it.
+#[derive(Clone)]
+pub(super) enum Part {
+    /// An `obj` or `ply`: its `[meshes]` name, its own map, its material.
+    Mesh(String, Affine, String),
+    /// A `sphere`, `disk`, `rectangle` or `cube` and its material, made anew for each
+    /// instance (an instance of a sphere is a sphere).
+    Unit(Box<Plugin>, String),
+}
+
 impl Importer {
-    /// A `shapegroup` of `obj` and `ply` shapes: each a `[meshes]` entry, placed only by
-    /// the `instance`s that name the group.
+    /// A `shapegroup` of `obj` and `ply` shapes (each a `[meshes]` entry) and unit shapes,
+    /// placed only by the `instance`s that name the group.
     fn shapegroup(&mut self, g: &Plugin) -> Result<()> {
         self.read(g);
         let id =
@@ -142,9 +181,11 @@ impl Importer {
         let mut parts = Vec::new();
         for (k, s) in g.children.iter().enumerate() {
             self.read(s);
-            if s.tag != "shape" || !matches!(s.kind.as_str(), "obj" | "ply") {
+            const UNIT: [&str; 4] = ["sphere", "disk", "rectangle", "cube"];
+            let mesh = matches!(s.kind.as_str(), "obj" | "ply");
+            if s.tag != "shape" || !(mesh || UNIT.contains(&s.kind.as_str())) {
                 return Err(s.at.error(format!(
-                    "{}: a shapegroup here holds obj and ply shapes only",
+                    "{}: a shapegroup here holds obj, ply, sphere, disk, rectangle and cube shapes",
                     s.label()
                 )));
             }
@@ -157,10 +198,14 @@ impl Importer {
                 Some(b) => self.named_material(b)?,
                 None => self.default_material(),
             };
+            if !mesh {
+                parts.push(Part::Unit(Box::new(s.clone()), material));
+                continue;
+            }
             let file = self
                 .text(s, "filename")?
                 .ok_or_else(|| s.at.error(format!("{}: needs a `filename`", s.label())))?;
-            self.shading_normals(s, &file, true)?;
+            self.instance_normals(s)?;
             let name = format!("{id}_{k}");
             self.file.meshes.insert(
                 name.clone(),
@@ -168,7 +213,7 @@ impl Importer {
                     file: self.path_of(&file),
                 },
             );
-            parts.push((name, self.to_world(s)?, material));
+            parts.push(Part::Mesh(name, self.to_world(s)?, material));
         }
         self.groups.insert(id, parts);
         Ok(())
@@ -194,15 +239,21 @@ impl Importer {
             .cloned()
             .ok_or_else(|| i.at.error(format!("no shapegroup `{group}`")))?;
         let to_world = self.to_world(i)?;
-        for (mesh, own, material) in parts {
-            self.file.objects.push(ObjectSpec::Instance {
-                mesh,
-                scale: Default::default(),
-                rotate: [0.0; 3],
-                translate: [0.0; 3],
-                matrix: Some(own.then(&to_world).rows()),
-                material,
-            });
+        for part in parts {
+            match part {
+                Part::Mesh(mesh, own, material) => self.file.objects.push(ObjectSpec::Instance {
+                    mesh,
+                    scale: Default::default(),
+                    rotate: [0.0; 3],
+                    translate: [0.0; 3],
+                    matrix: Some(own.then(&to_world).rows()),
+                    material,
+                }),
+                Part::Unit(s, material) => {
+                    let m = self.to_world(&s)?.then(&to_world);
+                    self.unit_shape(&s, material, &m)?;
+                }
+            }
         }
         Ok(())
     }

@@ -94,7 +94,7 @@ pub fn transform(
                 if axis == [0.0; 3] || !axis.iter().all(|a| a.is_finite()) {
                     return Err(at.error("<rotate> needs a finite, non-zero axis"));
                 }
-                (Affine::rotate(axis, angle), Step::Rotate(axis, angle))
+                (rotate_as_written(axis, angle), Step::Rotate(axis, angle))
             }
             "matrix" => {
                 let v = numbers("value")?.unwrap_or_default();
@@ -132,4 +132,24 @@ pub fn transform(
         steps.push(step);
     }
     Ok(Transform { map, steps })
+}
+
+/// Mitsuba's `<rotate>`: Rodrigues' formula of the axis as written, not normalised (Mitsuba
+/// 3.9.1 gives `<rotate x="0" y="1" z="1" angle="15"/>` a map that turns and stretches: its
+/// `[1][1]` is 1, not cos 15°). For a unit axis it is the turn [`Affine::rotate`] makes;
+/// for another the importer warns (`convert.rs`).
+fn rotate_as_written([x, y, z]: [f64; 3], degrees: f64) -> Affine {
+    if x * x + y * y + z * z == 1.0 {
+        return Affine::rotate([x, y, z], degrees);
+    }
+    let (s, c) = degrees.to_radians().sin_cos();
+    let k = 1.0 - c;
+    let rows = [
+        [c + x * x * k, x * y * k - z * s, x * z * k + y * s, 0.0],
+        [y * x * k + z * s, c + y * y * k, y * z * k - x * s, 0.0],
+        [z * x * k - y * s, z * y * k + x * s, c + z * z * k, 0.0],
+    ];
+    // Singular only for contrived axes; then the rotation of the unit axis, which the
+    // warning about the axis still names.
+    Affine::from_rows(rows).unwrap_or_else(|_| Affine::rotate([x, y, z], degrees))
 }

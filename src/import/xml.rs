@@ -13,6 +13,11 @@ use std::path::{Path, PathBuf};
 const MAX_BYTES: u64 = 64 << 20;
 /// The deepest `<include>` may nest: beyond, a file includes itself.
 const MAX_INCLUDES: usize = 16;
+/// The deepest plugins may nest once each `<ref>` is replaced by the plugin it names:
+/// beyond, a plugin holds itself.
+const MAX_REF_DEPTH: usize = 16;
+/// The most `<ref>`s resolved in one scene (each a copy of the plugin it names).
+const MAX_REFS: usize = 1 << 16;
 
 /// Where a plugin or a property is written.
 #[derive(Clone, Debug, PartialEq)]
@@ -111,9 +116,11 @@ pub fn read(path: &Path, defines: &BTreeMap<String, String>) -> Result<Document>
         fixed: defines.keys().cloned().collect(),
         ids: BTreeMap::new(),
         folders: vec![path.parent().unwrap_or(Path::new("")).to_path_buf()],
+        upgrade: false,
     };
     let mut plugins = Vec::new();
     reader.file(path, 0, &mut plugins)?;
+    reader.link(&mut plugins, 0, &mut 0)?;
     Ok(Document {
         plugins,
         folders: reader.folders,
@@ -128,6 +135,8 @@ struct Reader {
     ids: BTreeMap<String, Plugin>,
     /// Where relative file names are looked for: the scene's folder, then each `<path>`.
     folders: Vec<PathBuf>,
+    /// Whether the file being read is of Mitsuba 0.x, its names upgraded (`upgrade.rs`).
+    upgrade: bool,
 }
 
 impl Reader {
@@ -165,6 +174,10 @@ impl Reader {
         if root.tag_name().name() != "scene" {
             return Err(at(root).error("the document's element must be <scene>"));
         }
+        let outer = std::mem::replace(
+            &mut self.upgrade,
+            super::upgrade::below_2(root.attribute("version")),
+        );
         for node in root.children().filter(roxmltree::Node::is_element) {
             let here = at(node);
             match node.tag_name().name() {
@@ -185,7 +198,11 @@ impl Reader {
                 }
                 "path" => {
                     let value = self.attribute(node, "value", &here)?;
-                    let folder = self.folders[0].join(value);
+                    let folder = self.folders[0].join(&value);
+                    // Mitsuba refuses a folder that is not there: so does this reader.
+                    if !folder.is_dir() {
+                        return Err(here.error(format!("<path>: no folder `{value}` beside the scene")));
+                    }
                     self.folders.push(folder);
                 }
                 _ => {
@@ -194,6 +211,7 @@ impl Reader {
                 }
             }
         }
+        self.upgrade = outer;
         Ok(())
     }
 
@@ -240,13 +258,17 @@ impl Reader {
         let here = at(node);
         let tag = node.tag_name().name();
         if tag == "ref" {
-            let id = self.attribute(node, "id", &here)?;
-            let mut plugin =
-                self.ids.get(&id).cloned().ok_or_else(|| {
-                    here.error(format!("<ref id=\"{id}\"> names no plugin defined before it"))
-                })?;
-            plugin.name = node.attribute("name").map(str::to_owned);
-            return Ok(plugin);
+            // Kept as it is until the whole scene is read: Mitsuba lets a `<ref>` name a
+            // plugin defined after it (its Cornell box puts the lamp's emitter last).
+            return Ok(Plugin {
+                tag: "ref".into(),
+                kind: String::new(),
+                id: Some(self.attribute(node, "id", &here)?),
+                name: node.attribute("name").map(str::to_owned),
+                properties: BTreeMap::new(),
+                children: Vec::new(),
+                at: here,
+            });
         }
         const PLUGINS: [&str; 11] = [
             "shape",
@@ -288,10 +310,37 @@ impl Reader {
             let value = self.value(child, &child_at)?;
             plugin.properties.insert(name, Property { value, at: child_at });
         }
+        if self.upgrade {
+            super::upgrade::upgrade(&mut plugin);
+        }
         if let Some(id) = &plugin.id {
             self.ids.insert(id.clone(), plugin.clone());
         }
         Ok(plugin)
+    }
+
+    /// Each `<ref>` among `plugins` (and the plugins they hold) replaced by a copy of the
+    /// plugin of its id, under the ref's `name`; `count` counts the copies made.
+    fn link(&self, plugins: &mut [Plugin], depth: usize, count: &mut usize) -> Result<()> {
+        for p in plugins {
+            if p.tag == "ref" {
+                let id = p.id.clone().unwrap_or_default();
+                let mut target = self.ids.get(&id).cloned().ok_or_else(|| {
+                    p.at.error(format!("<ref id=\"{id}\"> names no plugin of the scene"))
+                })?;
+                *count += 1;
+                if depth >= MAX_REF_DEPTH || *count > MAX_REFS {
+                    return Err(p.at.error(format!(
+                        "<ref id=\"{id}\">: plugins nest deeper than {MAX_REF_DEPTH} or references number \
+                         more than {MAX_REFS} (a plugin that holds itself?)"
+                    )));
+                }
+                target.name = p.name.take();
+                *p = target;
+            }
+            self.link(&mut p.children, depth + 1, count)?;
+        }
+        Ok(())
     }
 
     fn value(&self, node: roxmltree::Node, at: &At) -> Result<Value> {

@@ -57,6 +57,7 @@ mod mesh_attributes;
 mod meshes;
 mod mis_unbiased;
 mod mitsuba_extensions;
+mod mitsuba_foreign;
 mod mitsuba_import;
 mod obj_material_errors;
 mod obj_materials;

@@ -164,7 +164,8 @@ fn a_scene_lands_as_the_scene_files_own_keys() {
             ..
         }
     ));
-    // The mesh keeps its matrix; its material's texture is the checkerboard with its to_uv.
+    // The mesh keeps its matrix; its material (a one-sided diffuse: matte in front, black
+    // behind) has the checkerboard with its to_uv.
     let ObjectSpec::Mesh { matrix, material, .. } = &f.objects[3] else {
         panic!("{:?}", f.objects[3])
     };
@@ -172,9 +173,12 @@ fn a_scene_lands_as_the_scene_files_own_keys() {
         *matrix,
         Some([[1.0, 0.0, 0.0, 2.0], [0.0, 2.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0]])
     );
+    let MaterialSpec::TwoSided(sides) = &f.materials[material.as_str()] else {
+        panic!()
+    };
     let MaterialSpec::Lambertian {
         albedo: TextureRef::Inline(t),
-    } = &f.materials[material.as_str()]
+    } = sides.front.as_ref()
     else {
         panic!()
     };

@@ -8,6 +8,7 @@ import xml.etree.ElementTree as ET
 import mitsuba as mi
 import pytest
 
+import foreign_check
 import ours
 import xml_check
 
@@ -50,3 +51,18 @@ def test_each_loads_in_mitsuba_and_imports_without_a_warning(name):
     out = subprocess.run([str(ours.BINARY), "check", str(path)], capture_output=True, text=True,
                          check=True).stdout
     assert "differs from Mitsuba" not in out, out
+
+
+@pytest.mark.parametrize("name", sorted(foreign_check.SCENES))
+def test_each_foreign_scene_loads_in_both(name):
+    """The scenes from elsewhere (validate/foreign/) load in Mitsuba at a tiny size, and
+    this renderer reads them (`check`: no error)."""
+    rel, sizes = foreign_check.SCENES[name]
+    path = foreign_check.FOREIGN / rel
+    tiny = {k: "8" if k != "spp" else "1" for k in sizes["quick"]}
+    scene = mi.load_file(str(path), **tiny)
+    assert min(scene.sensors()[0].film().size()) == 8
+    args = [str(ours.BINARY), "check", str(path)]
+    for k, v in tiny.items():
+        args += ["-D", f"{k}={v}"]
+    subprocess.run(args, capture_output=True, text=True, check=True)
