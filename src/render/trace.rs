@@ -200,7 +200,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
     /// `match` on the material's kind a hit.
     // The hit goes by value to the calls below that are not inlined (emission, the light
     // sample): a copy made in their branches keeps it out of memory on every other path
-    // (+4 % instructions on the spec's scenes when it escaped by reference).
+    // (docs/PERFORMANCE.md).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn shade_with<R, B>(
