@@ -4,7 +4,7 @@
 use super::Adaptive;
 use super::convergence::{Convergence, median_and_p99};
 use super::schedule::{Candidate, share, toward_target};
-use super::stats::PixelStats;
+use super::stats::{Estimate, PixelStats};
 use crate::camera::Camera;
 use crate::error::Result;
 use crate::float::Float;
@@ -62,14 +62,19 @@ where
         let out_of_time = || rounds > 0 && deadline.is_some_and(|d| Instant::now() >= d);
         rays += trace_round(renderer, &mut pixels, &next, &out_of_time);
         rounds += 1;
-        let errors: Vec<f64> = pixels
-            .iter()
-            .map(|p| p.estimate(adaptive.error_floor, adaptive.estimate).error)
+        let estimates: Vec<Estimate> = pixels
+            .par_iter()
+            .map(|p| p.estimate(adaptive.error_floor, adaptive.estimate))
             .collect();
+        let errors: Vec<f64> = estimates.iter().map(|e| e.error).collect();
         match deadline {
-            Some(deadline) => {
-                plan_for_time(&pixels, &errors, adaptive, (start.elapsed(), deadline), &mut next)
-            }
+            Some(deadline) => plan_for_time(
+                &pixels,
+                &estimates,
+                adaptive,
+                (start.elapsed(), deadline),
+                &mut next,
+            ),
             None => decide_for_target(&pixels, &errors, &mut next, adaptive),
         }
         let active = next.iter().filter(|&&n| n > 0).count();
@@ -236,7 +241,7 @@ fn decide_for_target<F: Float>(
 /// any) or the cap take none.
 fn plan_for_time<F: Float>(
     stats: &[PixelStats<F>],
-    errors: &[f64],
+    estimates: &[Estimate],
     adaptive: &Adaptive,
     (spent, deadline): (Duration, Instant),
     next: &mut [u32],
@@ -244,12 +249,12 @@ fn plan_for_time<F: Float>(
     let target = adaptive.target_error.unwrap_or(0.0);
     let candidates: Vec<Candidate> = stats
         .iter()
-        .zip(errors)
-        .map(|(p, &error)| {
-            let done = error <= target || p.n >= adaptive.max_spp;
+        .zip(estimates)
+        .map(|(p, e)| {
+            let done = e.error <= target || p.n >= adaptive.max_spp;
             Candidate {
                 n: p.n,
-                deviation: p.estimate(adaptive.error_floor, adaptive.estimate).deviation,
+                deviation: e.deviation,
                 cost: p.cost(),
                 room: if done { 0 } else { p.n.min(adaptive.max_spp - p.n) },
             }

@@ -84,13 +84,20 @@ pub(super) fn share(pixels: &[Candidate], budget: u64, next: &mut [u32]) {
         .fold(0.0f64, f64::max);
     let mut lo = 0.0f64;
     if total(hi) > budget {
-        // Sixty halvings take λ to within 2⁻⁶⁰ of the answer: far below one sample.
+        // Each halving is a pass over every pixel: stop once the shares come within
+        // 1/256 of the budget (a round that much short costs nothing), or after sixty,
+        // λ then within 2⁻⁶⁰ of the answer.
+        let enough = budget - budget / 256;
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);
-            if total(mid) > budget {
+            let shares = total(mid);
+            if shares > budget {
                 hi = mid;
             } else {
                 lo = mid;
+                if shares >= enough {
+                    break;
+                }
             }
         }
         hi = lo;

@@ -13,23 +13,36 @@ pub fn luminance(rgb: [f64; 3]) -> f64 {
 }
 
 /// What an adaptive render keeps of one pixel: the sum of its sample colours in their
-/// order (the uniform renderer's sum, so the mean is its bits) and the running central
-/// moments of their luminances (Welford's update, extended to the fourth moment by Pébay
-/// 2008), in `f64`.
+/// order (the uniform renderer's sum, so the mean is its bits) and the power sums of
+/// their luminances about the first one, `Σ (Y − Y₀)^k` for `k = 1..4`, in `f64`.
+///
+/// Power sums about a shift `K` give the central moments with no division per sample
+/// and four independent sums (a one-pass update of the central moments, Welford's or
+/// Pébay's, chains a division through every sample of a pixel). They lose nothing to cancellation when `K`
+/// is one of the samples. With `d = Ȳ − K`, sample `K` alone gives `M₂ ≥ d²`, so the sum
+/// `S₂ = Σ(Y−K)² = M₂ + n·d²` is at most `(n+1)·M₂`, and summing it rounds by at most
+/// `n·ε·S₂`: the relative error of `M₂` is below about `n²·ε` (4·10⁻⁹ at 4096 samples),
+/// and of `M₄`, by `M₄ ≥ d⁴` and `(a+b)⁴ ≤ 8(a⁴+b⁴)`, below about `8n²·ε`.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct PixelStats<F> {
     /// The sum of the sample colours, sample 0 first.
     pub sum: Color<F>,
     /// Samples taken.
     pub n: u32,
-    /// The mean luminance.
-    mean: f64,
-    /// `Σ (Y − Ȳ)^k` for `k = 2, 3, 4` (the third is needed to update the fourth).
-    m2: f64,
-    m3: f64,
-    m4: f64,
+    /// `K`: the first sample's luminance.
+    shift: f64,
+    /// `Σ (Y − K)^k` for `k = 1, 2, 3, 4`.
+    powers: [f64; 4],
     /// The bounces all its paths took: what its samples cost.
     bounces: u64,
+}
+
+/// A pixel's luminances summarised: their mean and central moment sums `Σ (Y − Ȳ)^k`.
+#[derive(Clone, Copy, Debug)]
+struct Moments {
+    mean: f64,
+    m2: f64,
+    m4: f64,
 }
 
 impl<F: Float> PixelStats<F> {
@@ -38,10 +51,8 @@ impl<F: Float> PixelStats<F> {
         Self {
             sum: Color::zero(),
             n: 0,
-            mean: 0.0,
-            m2: 0.0,
-            m3: 0.0,
-            m4: 0.0,
+            shift: 0.0,
+            powers: [0.0; 4],
             bounces: 0,
         }
     }
@@ -51,21 +62,32 @@ impl<F: Float> PixelStats<F> {
     pub fn add(&mut self, colour: Color<F>, bounces: u32) {
         self.sum = self.sum + colour;
         self.bounces += u64::from(bounces);
-        self.n += 1;
         let y = luminance(colour.to_f64());
-        // Pébay's one-pass update of the central moments (Sandia report SAND2008-6212,
-        // eq. 2.1 and 2.2 for one new value): δ = y − Ȳ, δₙ = δ/n,
-        // M₄ += δ·δₙ³(n−1)(n²−3n+3) + 6δₙ²M₂ − 4δₙM₃, M₃ += δ·δₙ²(n−1)(n−2) − 3δₙM₂,
-        // M₂ += δ·δₙ(n−1), Ȳ += δₙ, each from the old moments.
-        let n = f64::from(self.n);
-        let delta = y - self.mean;
-        let dn = delta / n;
-        let dn2 = dn * dn;
-        let term = delta * dn * (n - 1.0);
-        self.mean += dn;
-        self.m4 += term * dn2 * (n * n - 3.0 * n + 3.0) + 6.0 * dn2 * self.m2 - 4.0 * dn * self.m3;
-        self.m3 += term * dn * (n - 2.0) - 3.0 * dn * self.m2;
-        self.m2 += term;
+        if self.n == 0 {
+            self.shift = y;
+        }
+        self.n += 1;
+        let t = y - self.shift;
+        let t2 = t * t;
+        self.powers[0] += t;
+        self.powers[1] += t2;
+        self.powers[2] += t2 * t;
+        self.powers[3] += t2 * t2;
+    }
+
+    /// The mean and central moments from the power sums: with `d = S₁/n`,
+    /// `M₂ = S₂ − n·d²` and `M₄ = S₄ − 4d·S₃ + 6d²·S₂ − 3n·d⁴` (the binomial expansion of
+    /// `Σ((Y−K) − d)⁴`, its `S₁` term folded in by `S₁ = n·d`).
+    fn moments(&self) -> Moments {
+        let n = f64::from(self.n.max(1));
+        let [s1, s2, s3, s4] = self.powers;
+        let d = s1 / n;
+        let d2 = d * d;
+        Moments {
+            mean: self.shift + d,
+            m2: (s2 - n * d2).max(0.0),
+            m4: (s4 - 4.0 * d * s3 + 6.0 * d2 * s2 - 3.0 * n * d2 * d2).max(0.0),
+        }
     }
 
     /// The rays a sample of this pixel has cost on average, counted as its camera ray and
@@ -76,9 +98,10 @@ impl<F: Float> PixelStats<F> {
 
     /// The error estimate for the samples so far.
     pub fn estimate(&self, floor: f64, kind: ErrorEstimate) -> Estimate {
+        let m = self.moments();
         match kind {
-            ErrorEstimate::Guarded => estimate(self.n, self.mean, self.m2, self.m4, floor),
-            ErrorEstimate::SampleVariance => sample_variance(self.n, self.mean, self.m2, floor),
+            ErrorEstimate::Guarded => estimate(self.n, m.mean, m.m2, m.m4, floor),
+            ErrorEstimate::SampleVariance => sample_variance(self.n, m.mean, m.m2, floor),
         }
     }
 }
@@ -160,25 +183,72 @@ fn sample_variance(n: u32, mean: f64, m2: f64, floor: f64) -> Estimate {
 mod tests {
     use super::*;
 
-    /// The moments equal those computed in two passes.
+    /// The moments equal those computed in two passes, for values spread about their
+    /// mean and for values far from zero with a small spread, where power sums about zero
+    /// would lose every digit of the variance.
     #[test]
-    fn one_pass_moments_match_two_passes() {
-        let ys = [0.3, 0.1, 4.0, 0.2, 0.25, 0.0, 0.7, 0.15];
+    fn power_sums_give_the_two_pass_moments() {
+        let spread = [0.3, 0.1, 4.0, 0.2, 0.25, 0.0, 0.7, 0.15];
+        for offset in [0.0, 1e6] {
+            let ys = spread.map(|y| y + offset);
+            let mut stats = PixelStats::<f64>::new();
+            for &y in &ys {
+                stats.add(Color::new(y, y, y), 1);
+            }
+            // Far from zero the weights' rounding moves the luminances: compare with them,
+            // and in two passes over their differences from the first (exact near 10⁶,
+            // where the values are within a factor of 2), as a mean near 10⁶ would round
+            // the deviations from it.
+            let ys = ys.map(|y| luminance([y; 3]));
+            let xs = ys.map(|y| y - ys[0]);
+            let n = ys.len() as f64;
+            let mean = xs.iter().sum::<f64>() / n;
+            let m = |k: i32| xs.iter().map(|x| (x - mean).powi(k)).sum::<f64>();
+            let got = stats.moments();
+            assert!(
+                (got.mean - (ys[0] + mean)).abs() <= 1e-15 * got.mean.max(1.0),
+                "{got:?}"
+            );
+            let bound = 8.0 * n * n * f64::EPSILON;
+            assert!((got.m2 - m(2)).abs() < bound * m(2), "{got:?} {}", m(2));
+            assert!((got.m4 - m(4)).abs() < bound * m(4), "{got:?} {}", m(4));
+            assert_eq!(stats.n, 8);
+            assert_eq!(stats.cost(), 2.0);
+        }
+    }
+
+    /// The worst case for the shift: the first sample a firefly, far from all the others.
+    /// The moments still hold, as the firefly itself bounds them.
+    #[test]
+    fn a_firefly_loses_no_digits() {
+        let ys: Vec<f64> = (0..4096)
+            .map(|k| {
+                if k == 0 {
+                    1e7
+                } else {
+                    0.5 + 1e-3 * f64::from(k % 7)
+                }
+            })
+            .collect();
         let mut stats = PixelStats::<f64>::new();
         for &y in &ys {
-            // A grey sample has luminance y: the weights sum to 1.
-            stats.add(Color::new(y, y, y), 1);
+            stats.add(Color::splat(y), 0);
         }
         let n = ys.len() as f64;
         let mean = ys.iter().sum::<f64>() / n;
         let m = |k: i32| ys.iter().map(|y| (y - mean).powi(k)).sum::<f64>();
-        assert!((stats.mean - mean).abs() < 1e-15);
-        assert!((stats.m2 - m(2)).abs() < 1e-12, "{} {}", stats.m2, m(2));
-        assert!((stats.m3 - m(3)).abs() < 1e-12, "{} {}", stats.m3, m(3));
-        assert!((stats.m4 - m(4)).abs() < 1e-12, "{} {}", stats.m4, m(4));
-        assert_eq!(stats.n, 8);
-        assert_eq!(stats.cost(), 2.0);
-        assert_eq!(stats.sum, Color::splat(ys.iter().sum::<f64>()));
+        let got = stats.moments();
+        // The bounds of the type's docs.
+        assert!(
+            (got.m2 - m(2)).abs() < n * n * f64::EPSILON * m(2),
+            "{got:?} {}",
+            m(2)
+        );
+        assert!(
+            (got.m4 - m(4)).abs() < 8.0 * n * n * f64::EPSILON * m(4),
+            "{got:?} {}",
+            m(4)
+        );
     }
 
     /// The pseudo-sample alone: a pixel whose samples all agree claims `1/n`.
@@ -209,6 +279,7 @@ mod tests {
             spiky.add(Color::splat(if k == 40 { 20.0 } else { y }), 0);
         }
         let by_hand = |s: &PixelStats<f64>| {
+            let s = s.moments();
             let s2 = s.m2 / 63.0;
             let var_s2 = (s.m4 / 64.0 - s2 * s2 * 61.0 / 63.0) / 64.0;
             let sigma2 = s2 + var_s2.max(0.0).sqrt() + s.mean * s.mean / 64.0;
@@ -221,11 +292,15 @@ mod tests {
         assert!((c.error - by_hand(&calm)).abs() < 1e-12, "{c:?}");
         assert!((p.error - by_hand(&spiky)).abs() < 1e-12, "{p:?}");
         let shown = |e: f64, s: &PixelStats<f64>| {
+            let s = s.moments();
             ((e * s.mean).powi(2) * 64.0 - s.mean * s.mean / 64.0).sqrt() / s.mean
         };
         assert!((c.deviation - shown(c.error, &calm)).abs() < 1e-12, "{c:?}");
         // Two values: s⁴·(n−3)/(n−1) is nearly m₄, so the bound adds almost nothing...
-        let plain = |s: &PixelStats<f64>| (s.m2 / 63.0 / 64.0 + s.mean * s.mean / 4096.0).sqrt() / s.mean;
+        let plain = |s: &PixelStats<f64>| {
+            let s = s.moments();
+            (s.m2 / 63.0 / 64.0 + s.mean * s.mean / 4096.0).sqrt() / s.mean
+        };
         assert!(c.error < 1.01 * plain(&calm), "{c:?}");
         // ...but with one value 40 times the others, the kurtosis makes it count.
         assert!(p.error > 1.3 * plain(&spiky), "{p:?} vs {}", plain(&spiky));
