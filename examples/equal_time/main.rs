@@ -189,7 +189,7 @@ fn mean(runs: &[Measured]) -> Measured {
 /// took, pair `k` with seed `k + 1` for both: the pair shares the machine's load, and the
 /// errors are means over seeds (a caustic's error is a few fireflies: one seed is luck).
 /// Returns the scene's [`bound`](bound::bound).
-fn measure(case: &Case, plan: &Plan, runs: &mut Vec<Run>) -> raytrace::Result<f64> {
+fn measure(case: &Case, plan: &Plan, runs: &mut Vec<Run>) -> raytrace::Result<bound::Bounds> {
     let start = Instant::now();
     let r1 = uniform(case, plan.reference_spp, 1_000_001)?.image;
     let r2 = uniform(case, plan.reference_spp, 1_000_002)?.image;
@@ -225,9 +225,11 @@ fn measure(case: &Case, plan: &Plan, runs: &mut Vec<Run>) -> raytrace::Result<f6
     }
     let bound = bound::bound(case, &r1, &r2)?;
     eprintln!(
-        "{}: {:.1} s, bound {bound:.2}",
+        "{}: {:.1} s, bounds {:.2} (samples), {:.2} (rays)",
         case.name,
-        start.elapsed().as_secs_f64()
+        start.elapsed().as_secs_f64(),
+        bound.samples,
+        bound.rays
     );
     Ok(bound)
 }

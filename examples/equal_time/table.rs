@@ -1,5 +1,6 @@
 //! The study's Markdown table.
 
+use super::bound::Bounds;
 use super::{Plan, Run};
 use std::fmt::Write as _;
 
@@ -7,7 +8,7 @@ use std::fmt::Write as _;
 /// time (above 1: adaptive is better).
 pub fn table(
     runs: &[Run],
-    bounds: &[(&str, f64)],
+    bounds: &[(&str, Bounds)],
     plan: &Plan,
     loads: (&str, &str),
     threads: usize,
@@ -32,17 +33,19 @@ pub fn table(
          own measure), as displayed (`display_mse`, sRGB in [0, 1]) and linear (`mse`); and \
          the relative error at equal rays, which the machine's load does not disturb \
          (uniform's error scaled by its rays over adaptive's, as error ∝ 1/work). The last \
-         column is the most any allocation of samples over the pixels could gain in relative \
-         error at equal samples, `N·Σv²/(Σv)²` from each pixel's per-sample relative deviation \
-         `v` (24 renders of 16 spp; examples/equal_time/bound.rs):\n\n",
+         two columns are the most any allocation of samples over the pixels could gain in \
+         relative error: at equal samples, `N·Σv²/(Σv)²` from each pixel's per-sample relative \
+         deviation `v` (24 renders of 16 spp), and at equal rays, `Σv²·Σc/(Σv√c)²` with `c` \
+         the rays a sample of the pixel costs, shadow rays included (each pixel rendered alone, 32 spp), the bound \
+         for the column \"rel, equal rays\" (examples/equal_time/bound.rs):\n\n",
     );
     md.push_str("| scene |");
     for level in &plan.adaptive {
         let _ = write!(md, " {level} spp: rel | display | linear | rel, equal rays |");
     }
-    md.push_str(" bound |\n|---|");
+    md.push_str(" bound, samples | bound, rays |\n|---|");
     md.push_str(&"---|---|---|---|".repeat(plan.adaptive.len()));
-    md.push_str("---|\n");
+    md.push_str("---|---|\n");
     let mut scenes: Vec<&str> = runs.iter().map(|r| r.scene).collect();
     scenes.dedup();
     for scene in scenes {
@@ -67,8 +70,8 @@ pub fn table(
             }
         }
         match bounds.iter().find(|(name, _)| *name == scene) {
-            Some((_, b)) => _ = writeln!(md, " {b:.2} |"),
-            None => md.push_str(" – |\n"),
+            Some((_, b)) => _ = writeln!(md, " {:.2} | {:.2} |", b.samples, b.rays),
+            None => md.push_str(" – | – |\n"),
         }
     }
     md

@@ -35,10 +35,10 @@
 //! With [`Adaptive::time_budget`] the render goes on until the time is spent (or every
 //! pixel meets the target, if there is one, or reaches `max_spp`), and each round goes
 //! where it lowers the error most: the round's samples are shared out so that a pixel's
-//! total grows in proportion to the per-sample relative deviation its samples show,
-//! `σ̂/max(Ȳ, floor)` (without the pseudo-sample, which bounds what the map may claim but
-//! says nothing of where a sample helps), the allocation that minimises the summed
-//! squared relative error for the samples spent. **Such an image depends on the time**: on the machine, its load and the
+//! total grows in proportion to its per-sample relative deviation `σ̂/max(Ȳ, floor)` (the
+//! pseudo-sample included: a pixel whose samples all agree so far is not written off)
+//! over the square root of what its samples cost, the allocation that minimises the summed
+//! squared relative error for the time spent. **Such an image depends on the time**: on the machine, its load and the
 //! threads, and each tile of a tiled render spends the whole budget on its own pixels.
 //! It is not reproducible, only its first round (`min_spp` samples everywhere, which is
 //! always completed) is.
