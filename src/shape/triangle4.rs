@@ -16,7 +16,7 @@ pub struct Triangle4<F> {
     vertices: [[F4<F>; 3]; 3],
 }
 
-/// What [`Triangle4::hits`] finds: each lane's `t` (`+∞` for none) and what its
+/// What [`Triangle4::hits_within`] finds: each lane's `t` (`+∞` for none) and what its
 /// barycentrics are made of.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct TriangleHits<F> {
@@ -54,15 +54,23 @@ impl<F: Float> Triangle4<F> {
     /// Whether any lane's triangle is hit at some `t` in `(0, t_max)`.
     #[inline(always)]
     pub fn any(&self, ray: &Ray<F>, t_max: F) -> bool {
-        self.hits(ray).t.any_lt(t_max)
+        self.hits_within(ray, t_max).t.any_lt(t_max)
+    }
+
+    /// [`Triangle4::hits_within`] with no bound.
+    #[cfg(test)]
+    pub(crate) fn hits(&self, ray: &Ray<F>) -> TriangleHits<F> {
+        self.hits_within(ray, F::infinity())
     }
 
     /// For each lane, the `t` that [`Triangle::intersect_watertight`](super::Triangle::intersect_watertight)
-    /// reports with no bound (`t_max = +∞`), or `+∞` where it reports none, with what the
-    /// barycentrics are made of. The steps are the scalar test's, numbered as there.
-    /// Packets whose lanes all fail the edge test stop there.
+    /// reports with no bound (`t_max = +∞`) where it is at most `bound`, else `+∞`, with what
+    /// the barycentrics are made of. The steps are the scalar test's, numbered as there.
+    /// A lane beyond `bound` is dropped before pbrt's bound on `t` (step 5), the costliest
+    /// step: a ray meets most packets behind the nearest hit it has already found. Packets
+    /// whose lanes all fail the edge test, or all lie beyond `bound`, stop early.
     #[inline(always)]
-    pub(crate) fn hits(&self, ray: &Ray<F>) -> TriangleHits<F> {
+    pub(crate) fn hits_within(&self, ray: &Ray<F>, bound: F) -> TriangleHits<F> {
         let inf = F4::splat(F::infinity());
         let zero = F::zero();
         // 1. The permutation depends on the ray alone, so every lane takes the same one.
@@ -122,6 +130,10 @@ impl<F: Float> Triangle4<F> {
         let in_range = (det_negative & F4::mask_lt(t_scaled, z)) | (!det_negative & F4::mask_lt(z, t_scaled));
         let inv_det = F4::splat(F::one()) / det;
         let t = t_scaled * inv_det;
+        let near = edges_pass & in_range & F4::mask_le(t, F4::splat(bound));
+        if near == 0 {
+            return miss;
+        }
         // 5. The conservative t > 0 of pbrt-v4 (§6.8.4).
         let max3 = |p: F4<F>, q: F4<F>, r: F4<F>| p.abs().max(q.abs()).max(r.abs());
         let gamma = |n: u32| F4::splat(F::gamma(n));
@@ -135,7 +147,7 @@ impl<F: Float> Triangle4<F> {
         let max_e = max3(e0, e1, e2);
         let three = F4::splat(two + F::one());
         let delta_t = three * (gamma(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inv_det.abs();
-        let hit = edges_pass & in_range & F4::mask_lt(delta_t, t) & F4::mask_lt(t, inf);
+        let hit = near & F4::mask_lt(delta_t, t) & F4::mask_lt(t, inf);
         TriangleHits {
             t: F4::select(hit, t, inf),
             edges: [e0, e1, e2],
@@ -220,6 +232,14 @@ mod tests {
                         assert_eq!(t.to_f64().to_bits(), wt.to_f64().to_bits(), "{ray:?}");
                         let same = |x: [F; 3]| x.map(|c| c.to_f64().to_bits());
                         assert_eq!(same(got.coords(lane)), same(coords), "{ray:?}");
+                        // A bound at the hit keeps it, one below drops it.
+                        assert_eq!(packet.hits_within(&ray, wt).t.0[lane], wt, "{ray:?}");
+                        let below = wt * crate::float::lit::<F>(0.5);
+                        assert_eq!(
+                            packet.hits_within(&ray, below).t.0[lane],
+                            F::infinity(),
+                            "{ray:?}"
+                        );
                     }
                     None => assert_eq!(t, F::infinity(), "{ray:?}"),
                 }

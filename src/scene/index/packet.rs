@@ -128,7 +128,7 @@ impl<F: Float> Packet<F> {
             }
             Lanes::Triangles(tri) => {
                 for r in which {
-                    let hits = tri.hits(&rays[r]);
+                    let hits = tri.hits_within(&rays[r], nearest[r]);
                     self.offer_lanes(hits.t, |lane| hits.coords(lane), &mut nearest[r], &mut found[r]);
                 }
             }
