@@ -9,8 +9,8 @@
 #
 # Needs python3 with venv and pip; --figures also needs cargo. Runs from any directory.
 # Every build warns when a copy in report/data/ differs from its source, and when the figures
-# or the copied results were made at a commit older than the last one that touched src/ or
-# examples/ (the code they depict).
+# or the copied results were made at a commit older than the last one that changed the code
+# in src/ or examples/ (the code they depict; changes to comments alone do not count).
 #
 # report/data/ holds, from outside report/ (copied by --data and --figures):
 #   scale.csv, scale.md          python3 bench/scale.py (this crate against Embree 3)
@@ -51,10 +51,10 @@ DATA=report/data
 # every other option is the example's default).
 EXAMPLES=(
     "four_mirrors 800"
-    "matte_spheres 600"
-    "glass 600"
-    "plane_and_triangles 600"
-    "point_lights 600"
+    "matte_spheres 800"
+    "glass 800"
+    "plane_and_triangles 800"
+    "point_lights 800"
     "random_spheres 400"
 )
 
@@ -268,8 +268,16 @@ check_data() {
     rm -rf "$tmp"
     # Is the commit a result was made at older than the last change to the code it depicts?
     git rev-parse --git-dir >/dev/null 2>&1 || return 0
-    local code
-    code=$(git log -1 --format=%h -- src examples 2>/dev/null || true)
+    # The last commit that changed src/ or examples/ beyond comments and blank lines: a
+    # commit that only rewords comments leaves every result as it was.
+    local code="" c
+    for c in $(git log --format=%h -- src examples 2>/dev/null); do
+        if git show --format= --unified=0 "$c" -- src examples | grep -E '^[+-]' | grep -vE '^(\+\+\+|---) ' |
+            grep -qvE '^[+-][[:space:]]*(//.*)?$'; then
+            code=$c
+            break
+        fi
+    done
     [ -n "$code" ] || return 0
     stale() { # $1 what, $2 its commit, $3 the command that remakes it
         if [ -z "$2" ]; then
@@ -277,7 +285,7 @@ check_data() {
         elif ! git cat-file -e "$2^{commit}" 2>/dev/null; then
             echo "warning: $1 was made at $2, a commit this clone does not have" >&2
         elif ! git merge-base --is-ancestor "$code" "$2" 2>/dev/null; then
-            echo "warning: $1 was made at $2, before $code, the last commit that changed src/ or examples/: $3" >&2
+            echo "warning: $1 was made at $2, before $code, the last commit that changed the code in src/ or examples/: $3" >&2
         fi
     }
     stale "report/figures (build-info.csv)" \

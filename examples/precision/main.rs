@@ -1,5 +1,5 @@
 //! The accuracy study: every scene of [`cases`] rendered in f32 and f64, with the stable
-//! and the textbook intersection, each compared with a double-double reference along the
+//! and the textbook intersection (and the stable one spawning the textbook way), each compared with a double-double reference along the
 //! same random stream; then a convergence run of a Monte Carlo scene.
 //!
 //! `cargo run --release --features studies --example precision` writes `precision.csv` and the SVG charts
@@ -31,7 +31,7 @@ pub struct Row {
     pub scene: String,
     /// `f32`, `f64` or `dd`.
     pub scalar: &'static str,
-    /// `stable` or `textbook`.
+    /// `stable`, `textbook` or `no-offset` (stable, spawned the textbook way).
     pub method: &'static str,
     /// Rays traced.
     pub rays: u64,
@@ -41,13 +41,34 @@ pub struct Row {
     pub error: ImageError,
 }
 
-/// Renders `case` in scalar `F`, with the textbook spheres if asked.
-fn render_case<F: Float>(case: &Case, textbook: bool, seed: u64) -> raytrace::Result<Render> {
+/// How the study's spheres are intersected and spawn their rays.
+#[derive(Clone, Copy)]
+enum Method {
+    /// The library's.
+    Stable,
+    /// The textbook's ([`textbook::TextbookSphere`]).
+    Textbook,
+    /// The library's roots, the textbook's spawn ([`textbook::UnoffsetSphere`]).
+    NoOffset,
+}
+
+impl Method {
+    fn name(self) -> &'static str {
+        match self {
+            Self::Stable => "stable",
+            Self::Textbook => "textbook",
+            Self::NoOffset => "no-offset",
+        }
+    }
+}
+
+/// Renders `case` in scalar `F`, its spheres intersected by `method`.
+fn render_case<F: Float>(case: &Case, method: Method, seed: u64) -> raytrace::Result<Render> {
     let scene = case.scene.cast::<F>()?;
-    if textbook {
-        render_scene(case, &textbook::to_textbook(&scene), seed)
-    } else {
-        render_scene(case, &scene, seed)
+    match method {
+        Method::Stable => render_scene(case, &scene, seed),
+        Method::Textbook => render_scene(case, &textbook::to_textbook(&scene), seed),
+        Method::NoOffset => render_scene(case, &textbook::to_unoffset(&scene), seed),
     }
 }
 
@@ -65,10 +86,10 @@ fn render_scene<F: Float, S: Layout<F> + Sync>(
 }
 
 /// The best of `repeats` renders (the image is the same every time; the time varies).
-fn timed<F: Float>(case: &Case, textbook: bool, seed: u64, repeats: usize) -> raytrace::Result<Render> {
-    let mut best = render_case::<F>(case, textbook, seed)?;
+fn timed<F: Float>(case: &Case, method: Method, seed: u64, repeats: usize) -> raytrace::Result<Render> {
+    let mut best = render_case::<F>(case, method, seed)?;
     for _ in 1..repeats {
-        let r = render_case::<F>(case, textbook, seed)?;
+        let r = render_case::<F>(case, method, seed)?;
         if r.stats.elapsed < best.stats.elapsed {
             best = r;
         }
@@ -78,21 +99,48 @@ fn timed<F: Float>(case: &Case, textbook: bool, seed: u64, repeats: usize) -> ra
 
 fn study_case(case: &Case, seed: u64, rows: &mut Vec<Row>) -> raytrace::Result<()> {
     let reference: Image = if case.dd_reference {
-        render_case::<raytrace::DoubleDouble>(case, false, seed)?.image
+        render_case::<raytrace::DoubleDouble>(case, Method::Stable, seed)?.image
     } else {
-        render_case::<f64>(case, false, seed)?.image
+        render_case::<f64>(case, Method::Stable, seed)?.image
     };
-    let runs: [(&'static str, &'static str, Render); 4] = [
-        ("f32", "stable", timed::<f32>(case, false, seed, 3)?),
-        ("f64", "stable", timed::<f64>(case, false, seed, 3)?),
-        ("f32", "textbook", timed::<f32>(case, true, seed, 3)?),
-        ("f64", "textbook", timed::<f64>(case, true, seed, 3)?),
+    // The no-offset runs only explain the other two (their time is not charted): one each.
+    let runs: [(&'static str, Method, Render); 6] = [
+        (
+            "f32",
+            Method::Stable,
+            timed::<f32>(case, Method::Stable, seed, 3)?,
+        ),
+        (
+            "f64",
+            Method::Stable,
+            timed::<f64>(case, Method::Stable, seed, 3)?,
+        ),
+        (
+            "f32",
+            Method::Textbook,
+            timed::<f32>(case, Method::Textbook, seed, 3)?,
+        ),
+        (
+            "f64",
+            Method::Textbook,
+            timed::<f64>(case, Method::Textbook, seed, 3)?,
+        ),
+        (
+            "f32",
+            Method::NoOffset,
+            timed::<f32>(case, Method::NoOffset, seed, 1)?,
+        ),
+        (
+            "f64",
+            Method::NoOffset,
+            timed::<f64>(case, Method::NoOffset, seed, 1)?,
+        ),
     ];
     for (scalar, method, r) in runs {
         rows.push(Row {
             scene: case.name.clone(),
             scalar,
-            method,
+            method: method.name(),
             rays: r.stats.rays,
             seconds: r.stats.elapsed.as_secs_f64(),
             error: ImageError::between(&r.image, &reference, Encoding::Srgb)?,
@@ -147,16 +195,16 @@ fn run(o: &Options) -> raytrace::Result<()> {
     }
     let mut rows = Vec::new();
     println!(
-        "{:<15} {:<9} {:>9} {:>10} {:>10} {:>8} {:>8}",
+        "{:<15} {:<13} {:>9} {:>10} {:>10} {:>8} {:>8}",
         "scene", "run", "ms", "RMSE", "max", "PSNR", ">1 step"
     );
     for case in &cases {
         study_case(case, o.seed, &mut rows)?;
         for r in rows.iter().filter(|r| r.scene == case.name) {
             println!(
-                "{:<15} {:<9} {:>9.2} {:>10.2e} {:>10.2e} {:>8.1} {:>7.3}%",
+                "{:<15} {:<13} {:>9.2} {:>10.2e} {:>10.2e} {:>8.1} {:>7.3}%",
                 r.scene,
-                format!("{}/{}", r.scalar, &r.method[..4]),
+                format!("{}/{}", r.scalar, r.method),
                 r.seconds * 1e3,
                 r.error.rmse,
                 r.error.max,

@@ -55,13 +55,70 @@ impl<F: Float> Hittable<F> for TextbookSphere<F> {
     }
 }
 
-/// The study's shapes: the library's, or a textbook sphere.
+/// The library's sphere with the textbook's spawn: the stable roots and the point put back
+/// on the surface, but no error bound, so a spawned ray leaves from the point itself and only
+/// `t > 0.001` keeps it off its own surface. Between the two methods, it isolates what the
+/// stable method's spawn offset does to the error.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UnoffsetSphere<F>(pub Sphere<F>);
+
+impl<F: Float> Hittable<F> for UnoffsetSphere<F> {
+    #[inline]
+    fn intersect(&self, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        let (t0, t1) = self.0.roots(ray)?;
+        let t_min = lit(TEXTBOOK_T_MIN);
+        [t0, t1]
+            .into_iter()
+            .find(|&t| t > t_min && t < t_max)
+            .map(Intersection::at)
+    }
+    #[inline]
+    fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
+        Hit {
+            error: Vec3::zero(),
+            ..self.0.finish(ray, hit)
+        }
+    }
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        self.0.coordinates(ray, hit, record)
+    }
+    #[inline]
+    fn bounds(&self) -> Option<Aabb<F>> {
+        self.0.bounds()
+    }
+    #[inline]
+    fn parts(&self) -> u32 {
+        1
+    }
+    #[inline]
+    fn part_bounds(&self, _: u32) -> Option<Aabb<F>> {
+        self.0.bounds()
+    }
+    #[inline]
+    fn intersect_part(&self, _: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.intersect(ray, t_max)
+    }
+    fn area(&self) -> Option<F> {
+        self.0.area()
+    }
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        self.0.sample(from, u)
+    }
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        self.0.pdf(ray, hit)
+    }
+}
+
+/// The study's shapes: the library's, a textbook sphere, or a stable one spawning the
+/// textbook way.
 #[derive(Clone, Debug, PartialEq)]
 pub enum StudyShape<F> {
     /// A production shape, intersected as the library does.
     Kind(ShapeKind<F>),
     /// A sphere intersected the textbook way.
     Textbook(TextbookSphere<F>),
+    /// A stable sphere whose spawned rays start at the hit point, kept off by `t_min`.
+    Unoffset(UnoffsetSphere<F>),
 }
 
 /// `match` on a [`StudyShape`], the same call on every variant.
@@ -70,6 +127,7 @@ macro_rules! each_shape {
         match $shape {
             StudyShape::Kind($s) => $call,
             StudyShape::Textbook($s) => $call,
+            StudyShape::Unoffset($s) => $call,
         }
     };
 }
@@ -120,7 +178,7 @@ impl<F: Float> Layout<F> for StudyShape<F> {
     fn primitive(&self, part: u32) -> Primitive<F> {
         match self {
             Self::Kind(k) => k.primitive(part),
-            Self::Textbook(_) => Primitive::Other,
+            Self::Textbook(_) | Self::Unoffset(_) => Primitive::Other,
         }
     }
 }
@@ -131,11 +189,23 @@ pub type StudyScene<F> = Scene<F, StudyShape<F>, MaterialKind<F>>;
 /// `scene` with every sphere intersected the textbook way; other shapes, the materials,
 /// lights, background and acceleration unchanged.
 pub fn to_textbook<F: Float>(scene: &EnumScene<F>) -> StudyScene<F> {
+    replace_spheres(scene, |s| StudyShape::Textbook(TextbookSphere(s)))
+}
+
+/// `scene` with every sphere a [`UnoffsetSphere`]; the rest unchanged.
+pub fn to_unoffset<F: Float>(scene: &EnumScene<F>) -> StudyScene<F> {
+    replace_spheres(scene, |s| StudyShape::Unoffset(UnoffsetSphere(s)))
+}
+
+fn replace_spheres<F: Float>(
+    scene: &EnumScene<F>,
+    sphere: impl Fn(Sphere<F>) -> StudyShape<F>,
+) -> StudyScene<F> {
     let mut out = StudyScene::new(scene.background().clone());
     out.set_acceleration(scene.acceleration());
     for o in scene.objects() {
         let shape = match &o.shape {
-            ShapeKind::Sphere(s) => StudyShape::Textbook(TextbookSphere(*s)),
+            ShapeKind::Sphere(s) => sphere(*s),
             other => StudyShape::Kind(other.clone()),
         };
         out.add(shape, o.material.clone());

@@ -195,9 +195,9 @@ fn diff_map(image: &Image, reference: &Image) -> Image {
 
 /// The panels the report shows; the other renders are measured but not written.
 const SHOWN: [&str; 16] = [
-    "tiny_far-f32-stable",
     "tiny_far-f32-textbook",
     "tiny_far-f32-textbook-diff",
+    "tiny_far-f32-stable-diff",
     "far_1e4-f32-textbook",
     "far_1e4-f32-textbook-diff",
     "far_1e4-f32-stable-diff",
