@@ -26,6 +26,8 @@ mod scenes;
 #[path = "../../../examples/precision/cases.rs"]
 mod cases;
 
+// The study's third sphere (no offset) is not drawn here.
+#[allow(dead_code)]
 #[path = "../../../examples/precision/textbook.rs"]
 mod textbook;
 
@@ -33,7 +35,9 @@ use cases::{Cam, Case};
 use raytrace::metrics::ImageError;
 use raytrace::prelude::*;
 use raytrace::aabb::Aabb;
-use raytrace::shape::{Hit, textbook_sphere_record, textbook_sphere_t};
+use raytrace::shape::{
+    Coordinates, Hit, Surface, SurfaceSample, textbook_sphere_record, textbook_sphere_t,
+};
 use raytrace::{DoubleDouble, Image, Intersection, Scene};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -54,8 +58,29 @@ impl<F: Float> Hittable<F> for NoTMinSphere<F> {
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
         textbook_sphere_record(&self.0, ray, hit.t)
     }
+    fn coordinates(&self, ray: &Ray<F>, hit: &Intersection<F>, record: &Hit<F>) -> Coordinates<F> {
+        self.0.coordinates(ray, hit, record)
+    }
     fn bounds(&self) -> Option<Aabb<F>> {
         self.0.bounds()
+    }
+    fn parts(&self) -> u32 {
+        1
+    }
+    fn part_bounds(&self, _: u32) -> Option<Aabb<F>> {
+        self.0.bounds()
+    }
+    fn intersect_part(&self, _: u32, ray: &Ray<F>, t_max: F) -> Option<Intersection<F>> {
+        self.intersect(ray, t_max)
+    }
+    fn area(&self) -> Option<F> {
+        self.0.area()
+    }
+    fn sample(&self, from: Vec3<F>, u: [f64; 3]) -> Option<SurfaceSample<F>> {
+        self.0.sample(from, u)
+    }
+    fn pdf(&self, ray: &Ray<F>, hit: &Hit<F>) -> F {
+        self.0.pdf(ray, hit)
     }
 }
 
@@ -114,7 +139,30 @@ impl<F: Float> Hittable<F> for NaiveMesh<F> {
         // A generous bound on the point's rounding error, so that spawned rays never
         // re-hit: only the leaks through edges differ from the library's render.
         let error = point.map(|x| x.abs() * lit::<F>(64.0) * F::eps());
-        Hit::new(hit.t, point, error, (b - a).cross(c - a).normalize(), ray.direction)
+        let surface = Surface {
+            t: hit.t,
+            point,
+            error,
+            outward: (b - a).cross(c - a).normalize(),
+            shading_normal: None,
+        };
+        Hit::new(surface, ray.direction)
+    }
+    fn coordinates(&self, _: &Ray<F>, _: &Intersection<F>, _: &Hit<F>) -> Coordinates<F> {
+        Coordinates {
+            uv: [F::zero(); 2],
+            dpdu: Vec3::zero(),
+        }
+    }
+    // Never a light: the mirror mesh emits nothing.
+    fn area(&self) -> Option<F> {
+        None
+    }
+    fn sample(&self, _: Vec3<F>, _: [f64; 3]) -> Option<SurfaceSample<F>> {
+        None
+    }
+    fn pdf(&self, _: &Ray<F>, _: &Hit<F>) -> F {
+        F::zero()
     }
     fn bounds(&self) -> Option<Aabb<F>> {
         (0..self.parts()).filter_map(|p| self.part_bounds(p)).reduce(Aabb::union)
@@ -158,12 +206,12 @@ fn render_scene<F: Float, S: Layout<F> + Sync>(
 /// The spec's four mirrors in `F` with every sphere intersected with `t_min = 0`.
 fn render_no_t_min<F: Float>(case: &Case) -> raytrace::Result<Image> {
     let scene = case.scene.cast::<F>()?;
-    let mut naive: Scene<F, NoTMinSphere<F>, MaterialKind<F>> = Scene::new(*scene.background());
+    let mut naive: Scene<F, NoTMinSphere<F>, MaterialKind<F>> = Scene::new(scene.background().clone());
     for o in scene.objects() {
         let ShapeKind::Sphere(s) = o.shape else {
             unreachable!("four_mirrors holds spheres only")
         };
-        naive.add(NoTMinSphere(s), o.material);
+        naive.add(NoTMinSphere(s), o.material.clone());
     }
     let Cam::Screen(camera) = case.camera else {
         unreachable!("four_mirrors uses the spec's camera")
@@ -360,7 +408,7 @@ fn watertight<F: Float>() -> raytrace::Result<(Image, Image)> {
             .map(|t| t.map(|k| vertices[k as usize]))
             .collect(),
     };
-    let mut library_scene = EnumScene::<F>::new(background);
+    let mut library_scene = EnumScene::<F>::new(background.clone());
     library_scene.add(Mesh::new(vertices, triangles)?, mirror);
     let mut naive_scene: Scene<F, NaiveMesh<F>, MaterialKind<F>> = Scene::new(background);
     naive_scene.add(naive, mirror);
