@@ -159,7 +159,9 @@ def versions():
         except (OSError, IndexError):
             return "unknown"
     commit = first_line(["git", "rev-parse", "--short", "HEAD"])
-    status = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
+    # Only changes to what is built and run count (the report's data may be mid-edit).
+    status = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--", "src", "examples",
+                             "bench/book.py", "bench/book", "Cargo.toml", "Cargo.lock", ".cargo"],
                             capture_output=True, text=True, cwd=ROOT).stdout
     if status.strip():
         commit += " (with uncommitted changes)"

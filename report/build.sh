@@ -10,20 +10,23 @@
 # Needs python3 with venv and pip; --figures also needs cargo. Runs from any directory.
 # Every build warns when a copy in report/data/ differs from its source, and when the figures
 # or the copied results were made at a commit older than the last one that changed the code
-# in src/ or examples/ (the code they depict; changes to comments alone do not count).
+# that makes them (the code they depict; changes to comments alone do not count).
 #
 # report/data/ holds, from outside report/ (copied by --data and --figures):
 #   scale.csv, scale.md          python3 bench/scale.py (this crate against Embree 3)
-#   comparison.csv, comparison.md, furnace.csv, fresnel_probe.csv
-#                                bash validate/run.sh (the Mitsuba 3 cross-check)
+#   comparison.csv, comparison.md, furnace.csv, fresnel_probe.csv, foreign.csv, foreign.md,
+#   foreign-veach_mis.png        bash validate/run.sh (the Mitsuba 3 cross-check)
+#   mitsuba_bench.csv            validate/.venv/bin/python validate/bench.py (time beside Mitsuba 3)
+#   book.csv, book.md            python3 bench/book.py (random_spheres beside the book's C++)
+#   equal_time.csv, equal_time.md
+#                                cargo run --release --features studies --example equal_time
+#   provenance.csv               each copy's source and the commit that last committed it
 # and, made by --figures:
 #   modules.csv, loc.csv         python3 report/tools/modules.py (module graph, line counts)
 #   speed.csv, speed_memory.csv  python3 report/tools/speed.py (interleaved timings)
 #   dispatch.csv                 cargo bench --bench render -- dispatch (criterion, enum vs dyn)
 #   tests.csv                    cargo test -- --list (tests per test target)
 #   tiles.csv                    the dragon in four tiles, merged, compared with the whole
-# and one file kept by hand, recorded.csv: the one measurement of the book's C++ (not in this
-# repository), copied from docs/PERFORMANCE.md with the commit it was made beside.
 #
 # --figures regenerates, into report/figures/:
 #   renders/<example>.png, renders.txt, renders.csv
@@ -37,6 +40,8 @@
 #   renders/cornell_box.png, renders/dragon.png, cli/*.txt, ../data/tiles.csv
 #       scene files rendered and checked by the raytrace binary (the dragon and its tiles only if
 #       tools/fetch_meshes.sh has fetched it; otherwise the committed figure stays);
+#   renders/materials.png, renders/environment.png, bsdf_chi2.csv
+#       Part II's figures (report/tools/beyond.sh);
 #   build-info.csv
 #       the machine, compiler, build flags and commit the figures were made with.
 set -euo pipefail
@@ -219,6 +224,9 @@ with open(sys.argv[2], "w", newline="") as f:
 print(f"wrote {sys.argv[2]}: {sum(counts.values())} tests in {len(counts)} targets")
 PY
 
+    echo "== Part II's figures (report/tools/beyond.sh)"
+    bash report/tools/beyond.sh
+
     {
         echo "key,value"
         echo "cpu,\"$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //' || echo unknown)\""
@@ -239,13 +247,25 @@ COPIES=(
     "validate/results/comparison.md $DATA/comparison.md"
     "validate/results/furnace.csv $DATA/furnace.csv"
     "validate/results/fresnel_probe.csv $DATA/fresnel_probe.csv"
+    "validate/results/foreign/comparison.csv $DATA/foreign.csv"
+    "validate/results/foreign/comparison.md $DATA/foreign.md"
+    "validate/results/foreign/png/foreign-veach_mis-f64.png $DATA/foreign-veach_mis.png"
+    "validate/results/bench/bench.csv $DATA/mitsuba_bench.csv"
+    "bench/results/book.csv $DATA/book.csv"
+    "bench/results/book.md $DATA/book.md"
+    "bench/results/equal_time.csv $DATA/equal_time.csv"
+    "bench/results/equal_time.md $DATA/equal_time.md"
 )
 
 copy_data() {
     mkdir -p "$DATA"
+    # provenance.csv: each copy's source and the commit that last committed it (results whose
+    # own text names no commit are quoted with this one).
+    echo "copy,source,committed_at" >"$DATA/provenance.csv"
     for pair in "${COPIES[@]}"; do
         read -r src dst <<<"$pair"
         if [ -f "$src" ]; then cp "$src" "$dst"; else echo "warning: $src is missing; $dst kept" >&2; fi
+        echo "${dst#"$DATA"/},$src,$(git log -1 --format=%h -- "$src" 2>/dev/null)" >>"$DATA/provenance.csv"
     done
     python3 report/tools/modules.py "$DATA"
 }
@@ -268,36 +288,54 @@ check_data() {
     rm -rf "$tmp"
     # Is the commit a result was made at older than the last change to the code it depicts?
     git rev-parse --git-dir >/dev/null 2>&1 || return 0
-    # The last commit that changed src/ or examples/ beyond comments and blank lines: a
-    # commit that only rewords comments leaves every result as it was.
-    local code="" c
-    for c in $(git log --format=%h -- src examples 2>/dev/null); do
-        if git show --format= --unified=0 "$c" -- src examples | grep -E '^[+-]' | grep -vE '^(\+\+\+|---) ' |
-            grep -qvE '^[+-][[:space:]]*(//.*)?$'; then
-            code=$c
-            break
-        fi
-    done
-    [ -n "$code" ] || return 0
-    stale() { # $1 what, $2 its commit, $3 the command that remakes it
-        if [ -z "$2" ]; then
-            echo "warning: $1 names no commit" >&2
-        elif ! git cat-file -e "$2^{commit}" 2>/dev/null; then
-            echo "warning: $1 was made at $2, a commit this clone does not have" >&2
-        elif ! git merge-base --is-ancestor "$code" "$2" 2>/dev/null; then
-            echo "warning: $1 was made at $2, before $code, the last commit that changed the code in src/ or examples/: $3" >&2
+    # The last commit that changed the code under the given paths beyond comments (// or # )
+    # and blank lines: a commit that only rewords comments leaves every result as it was.
+    last_code() {
+        local c
+        for c in $(git log --format=%h -- "$@" 2>/dev/null); do
+            if git show --format= --unified=0 "$c" -- "$@" | grep -E '^[+-]' | grep -vE '^(\+\+\+|---) ' |
+                grep -qvE '^[+-][[:space:]]*(//.*|#( .*)?)?$'; then
+                echo "$c"
+                return
+            fi
+        done
+    }
+    stale() { # $1 what, $2 its commit, $3 the command that remakes it, then the paths it depicts
+        local what=$1 made=$2 remake=$3 code
+        shift 3
+        code=$(last_code "$@")
+        if [ -z "$code" ]; then
+            return
+        elif [ -z "$made" ]; then
+            echo "warning: $what names no commit" >&2
+        elif ! git cat-file -e "$made^{commit}" 2>/dev/null; then
+            echo "warning: $what was made at $made, a commit this clone does not have" >&2
+        elif ! git merge-base --is-ancestor "$code" "$made" 2>/dev/null; then
+            echo "warning: $what was made at $made, before $code, the last commit that changed the code in $*: $remake" >&2
         fi
     }
     stale "report/figures (build-info.csv)" \
-        "$(sed -n 's/^commit,\([0-9a-f]*\).*/\1/p' "$FIG/build-info.csv")" "bash report/build.sh --figures"
+        "$(sed -n 's/^commit,\([0-9a-f]*\).*/\1/p' "$FIG/build-info.csv")" "bash report/build.sh --figures" \
+        src examples report/failures
     grep -q "with uncommitted changes" "$FIG/build-info.csv" &&
         echo "warning: report/figures were made from uncommitted code" >&2
     stale "$DATA/scale.csv (scale.md)" \
         "$(grep -o 'commit `[0-9a-f]*`' "$DATA/scale.md" | head -1 | tr -d '`' | cut -d' ' -f2)" \
-        "python3 bench/scale.py, then bash report/build.sh --data"
+        "python3 bench/scale.py, then bash report/build.sh --data" src examples/scale bench/scale.py bench/embree
     stale "$DATA/comparison.csv (comparison.md)" \
         "$(grep -o 'Commit `[0-9a-f]*`' "$DATA/comparison.md" | head -1 | tr -d '`' | cut -d' ' -f2)" \
-        "bash validate/run.sh, then bash report/build.sh --data"
+        "bash validate/run.sh, then bash report/build.sh --data" src 'validate/*.py' validate/run.sh validate/scenes
+    stale "$DATA/foreign.csv (foreign.md)" \
+        "$(grep -o 'Commit `[0-9a-f]*`' "$DATA/foreign.md" | head -1 | tr -d '`' | cut -d' ' -f2)" \
+        "bash validate/run.sh, then bash report/build.sh --data" src 'validate/*.py' validate/foreign
+    stale "$DATA/book.csv (book.md)" \
+        "$(grep -o 'Ours: commit [0-9a-f]*' "$DATA/book.md" | head -1 | cut -d' ' -f3)" \
+        "python3 bench/book.py, then bash report/build.sh --data" src examples/random_spheres.rs bench/book.py bench/book
+    grep -q "with uncommitted changes" "$DATA/book.md" &&
+        echo "warning: $DATA/book.md was made from uncommitted code" >&2
+    # The equal-time study's results name no commit: the one that committed them stands for it.
+    stale "$DATA/equal_time.csv" "$(sed -n 's/^equal_time.csv,[^,]*,//p' "$DATA/provenance.csv")" \
+        "cargo run --release --features studies --example equal_time, then bash report/build.sh --data" src examples/equal_time
     return 0
 }
 

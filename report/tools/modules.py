@@ -8,7 +8,8 @@ modules.csv: one row per top-level module of src/ (the `mod` lines of src/lib.rs
   module, files, lines (all lines of its files, tests and docs included),
   layer (0 for a module that uses no other; else one more than the highest it uses),
   position (its place in its layer, 0 to 1, for the diagram),
-  uses (the modules it names in `use crate::...` lines outside its unit tests, space-separated),
+  uses (the modules it names in `use crate::...` lines or `crate::module::` paths outside its
+  comments and unit tests, space-separated),
   uses_direct (those uses no chain of other uses implies: the transitive reduction).
 loc.csv: lines per part of the repository (src without the binary, the binary, tests,
   examples, benches): all lines as `wc -l` counts them, and code_lines, those that are neither
@@ -69,6 +70,10 @@ def used(text, known):
         else:
             names = [re.match(r"(\w+)", stmt).group(1)]
         found.update(n for n in names if n in known)
+    # Paths written out in code (`impl Float for crate::double_double::DoubleDouble`), not in
+    # comments or documentation.
+    code = "\n".join(l for l in text.splitlines() if not l.strip().startswith("//"))
+    found.update(n for n in re.findall(r"\bcrate::(\w+)::", code) if n in known)
     return found
 
 
