@@ -24,6 +24,8 @@
 mod cases;
 mod far_spheres;
 mod properties;
+// The study's third sphere (the stable roots spawning the textbook way) is not used here.
+#[allow(dead_code)]
 #[path = "../../../examples/precision/textbook.rs"]
 mod textbook;
 
