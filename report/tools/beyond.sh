@@ -7,6 +7,8 @@
 #       cargo run --release --example materials -- --width 800 (every material and texture kind)
 #   figures/renders/environment.png, figures/cli/environment-render.txt
 #       raytrace render scenes/environment.toml --width 800 (an environment map, depth of field)
+#   figures/renders/instances.png, figures/cli/instances-render.txt
+#       raytrace render validate/scenes/instances.toml --width 400 (instances of two meshes)
 #   figures/bsdf_chi2.csv
 #       the BSDF samplers' chi-squared runs and the planted mistakes, as tests/it/bsdf_chi2.rs
 #       prints them (cargo test --test it bsdf_chi2 -- --nocapture)
@@ -29,6 +31,11 @@ echo "== the environment scene (raytrace render)"
 target/release/raytrace render scenes/environment.toml --width 800 --quiet --out "$tmp/environment.png" |
     sed "s|$tmp/|report/figures/renders/|" | tee "$FIG/cli/environment-render.txt"
 cp "$tmp/environment.png" "$FIG/renders/environment.png"
+
+echo "== instances (validate/scenes/instances.toml: one ball mesh and a cube placed several times)"
+target/release/raytrace render validate/scenes/instances.toml --width 400 --quiet --out "$tmp/instances.png" |
+    sed "s|$tmp/|report/figures/renders/|" | tee "$FIG/cli/instances-render.txt"
+cp "$tmp/instances.png" "$FIG/renders/instances.png"
 
 echo "== the BSDF samplers' chi-squared tests (tests/it/bsdf_chi2.rs)"
 cargo test --quiet --test it bsdf_chi2 -- --nocapture --test-threads 1 >"$tmp/chi2.txt" 2>&1 ||
