@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the report: report/report.pdf from report/report.typ, with Typst from PyPI (pinned).
+# Builds the report: report/report.pdf from report/report.typ (with report/lib/ and report/parts/),
+# with Typst from PyPI (pinned).
 #
 #   bash report/build.sh             compile report/report.pdf from the committed figures and data
 #   bash report/build.sh --data      first copy the data made outside report/ into report/data/
@@ -63,7 +64,7 @@ EXAMPLES=(
     "random_spheres 400"
 )
 
-usage() { sed -n '2,13s/^# \{0,1\}//p' "$0"; }
+usage() { sed -n '2,14s/^# \{0,1\}//p' "$0"; }
 
 figures=false
 data=false
