@@ -31,7 +31,6 @@ pub(super) fn build<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) ->
         .enumerate()
         .map(|(i, (b, class))| Item {
             bounds: b,
-            centroid: b.centroid(),
             index: i as u32,
             class,
         })
@@ -41,21 +40,32 @@ pub(super) fn build<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) ->
     }
     let span = fold(&items);
     let tree = subtree(&mut items, 0, span, 0);
-    let (mut nodes, mut leaves) = (vec![empty_node()], Vec::new());
-    tree.flatten(0, &mut nodes, &mut leaves);
-    nodes.shrink_to_fit();
-    leaves.shrink_to_fit();
-    // The partitions left the primitives in leaf order.
+    // The partitions left the primitives in leaf order; the items go before the nodes are
+    // laid out, so the two are never held at once.
     let indices = items.par_iter().map(|it| it.index).collect();
+    drop(items);
+    let (mut nodes, mut leaves) = (
+        Vec::with_capacity(tree.nodes()),
+        Vec::with_capacity(tree.leaves()),
+    );
+    nodes.push(empty_node());
+    tree.flatten(0, &mut nodes, &mut leaves);
     (nodes, indices, leaves)
 }
 
-/// What the build reads of a primitive, copied once into one compact array.
+/// What the build reads of a primitive, copied once into one compact array (32 bytes in
+/// f32: the centroid is recomputed, not stored, which saves more memory than time).
 struct Item<F> {
     bounds: Aabb<F>,
-    centroid: Vec3<F>,
     index: u32,
     class: u8,
+}
+
+impl<F: Float> Item<F> {
+    #[inline(always)]
+    fn centroid(&self) -> Vec3<F> {
+        self.bounds.centroid()
+    }
 }
 
 /// A node's box and the box of its primitives' centroids, handed down by the parent's
@@ -83,7 +93,7 @@ impl<F: Float> Span<F> {
     fn add(self, it: &Item<F>) -> Self {
         Self {
             bounds: union(self.bounds, it.bounds),
-            centroids: grow(self.centroids, it.centroid),
+            centroids: grow(self.centroids, it.centroid()),
         }
     }
 }
@@ -177,6 +187,22 @@ impl<F: Float> Part<F> {
 }
 
 impl<F: Float> Subtree<F> {
+    /// How many nodes [`Subtree::flatten`] lays out, its root included.
+    fn nodes(&self) -> usize {
+        match self {
+            Subtree::Part(part) => part.nodes.len(),
+            Subtree::Split { halves, .. } => 1 + halves.0.nodes() + halves.1.nodes(),
+        }
+    }
+
+    /// How many leaves it holds.
+    fn leaves(&self) -> usize {
+        match self {
+            Subtree::Part(part) => part.leaves.len(),
+            Subtree::Split { halves, .. } => halves.0.leaves() + halves.1.leaves(),
+        }
+    }
+
     /// Writes this subtree's root into the allocated `nodes[at]` and appends its
     /// descendants and leaves, in the order the sequential build writes them.
     fn flatten(self, at: usize, nodes: &mut Vec<Node<F>>, leaves: &mut Vec<(u32, u32)>) {

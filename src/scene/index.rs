@@ -21,7 +21,7 @@ use crate::material::Material;
 use crate::ray::Ray;
 use crate::shape::{Coordinates, Hit, Intersection};
 pub(crate) use packet::Found;
-use packet::{Key, Packer, Packet, kind};
+use packet::{Key, Packer, Packets, kind};
 
 /// Each ray's nearest hit so far in a batch ([`Index::hit_all`]), with the stream
 /// traversal's buffers; kept from batch to batch.
@@ -39,9 +39,9 @@ pub(super) struct Index<F> {
     plain: bool,
     /// The packets every ray tests: all the parts, or with a BVH the unbounded and the
     /// huge ones.
-    looped: Vec<Packet<F>>,
+    looped: Packets<F>,
     /// With a BVH, leaf `k`'s parts: one kind, one packet.
-    leaves: Vec<Packet<F>>,
+    leaves: Packets<F>,
     bvh: Option<Bvh<F>>,
 }
 
@@ -73,8 +73,8 @@ impl<F: Float> Index<F> {
         let plain = acceleration == Acceleration::Linear || (!wanted && !keys().any(lanes));
         let mut index = Self {
             plain,
-            looped: Vec::new(),
-            leaves: Vec::new(),
+            looped: Packets::default(),
+            leaves: Packets::default(),
             bvh: None,
         };
         if plain {
@@ -88,7 +88,10 @@ impl<F: Float> Index<F> {
         let tree_keys: Vec<Key> = keys().filter(in_tree).collect();
         let class = |k: &Key| kind(&shape(k).primitive(k.1));
         let bvh = Bvh::build_classes(tree_keys.iter().map(|k| (bounds(k).unwrap_or(whole), class(k))));
-        index.leaves.reserve_exact(bvh.leaf_count());
+        let leaves = (0..bvh.leaf_count())
+            .map(|k| bvh.leaf(k))
+            .map(|l| (class(&tree_keys[l[0] as usize]), l.len()));
+        index.leaves.reserve_leaves(leaves);
         let mut leaf_keys = Vec::new();
         for k in 0..bvh.leaf_count() {
             leaf_keys.clear();
@@ -121,13 +124,15 @@ impl<F: Float> Index<F> {
         }
         let (mut nearest, mut found) = ([t_max], [Found::none()]);
         let rays = std::slice::from_ref(ray);
-        for p in &self.looped {
+        for p in self.looped.iter() {
             p.offer(objects, rays, [0], &mut nearest, &mut found);
         }
         if let Some(bvh) = &self.bvh {
             bvh.traverse(ray, nearest[0], |k, _| {
                 let before = nearest[0];
-                self.leaves[k].offer(objects, rays, [0], &mut nearest, &mut found);
+                self.leaves
+                    .get(k)
+                    .offer(objects, rays, [0], &mut nearest, &mut found);
                 (nearest[0] < before).then_some(nearest[0])
             });
         }
@@ -161,13 +166,13 @@ impl<F: Float> Index<F> {
                 }
             }
         }
-        for p in &self.looped {
+        for p in self.looped.iter() {
             p.offer(objects, rays, 0..rays.len(), t, found);
         }
         if let Some(bvh) = &self.bvh {
             bvh.traverse_all(rays, t, streams, |k, reached, t| {
                 let reached = reached.iter().map(|&r| r as usize);
-                self.leaves[k].offer(objects, rays, reached, t, found);
+                self.leaves.get(k).offer(objects, rays, reached, t, found);
             });
         }
         for (i, ray) in rays.iter().enumerate() {
@@ -198,7 +203,7 @@ impl<F: Float> Index<F> {
             || self
                 .bvh
                 .as_ref()
-                .is_some_and(|bvh| bvh.any(ray, t_max, |k| self.leaves[k].any(objects, ray, t_max)))
+                .is_some_and(|bvh| bvh.any(ray, t_max, |k| self.leaves.get(k).any(objects, ray, t_max)))
     }
 }
 

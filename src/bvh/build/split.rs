@@ -58,8 +58,9 @@ fn bin<F: Float>(items: &[Item<F>], binners: &[Binner<F>; 3]) -> [[Bin<F>; BINS]
         count: 0,
     }; BINS]; 3];
     for it in items {
+        let c = it.centroid();
         for (axis, bins) in bins.iter_mut().enumerate() {
-            let b = &mut bins[binners[axis].bin(it.centroid[axis])];
+            let b = &mut bins[binners[axis].bin(c[axis])];
             b.bounds = union(b.bounds, it.bounds);
             b.count += 1;
         }
@@ -160,7 +161,7 @@ fn split_by_position<F: Float>(
             let binner = binners[b.axis];
             let (mut mid, mut lc, mut rc) = (0, Aabb::empty(), Aabb::empty());
             for i in 0..n {
-                let c = items[i].centroid;
+                let c = items[i].centroid();
                 if binner.bin(c[b.axis]) <= b.last {
                     lc = grow(lc, c);
                     items.swap(i, mid);
@@ -228,8 +229,8 @@ fn median_split<F: Float>(items: &mut [Item<F>]) -> Option<(usize, Span<F>, Span
     let axis = fold(items).centroids.longest_axis();
     let mid = items.len() / 2;
     items.select_nth_unstable_by(mid, |a, b| {
-        a.centroid[axis]
-            .partial_cmp(&b.centroid[axis])
+        a.centroid()[axis]
+            .partial_cmp(&b.centroid()[axis])
             .unwrap_or(std::cmp::Ordering::Equal)
     });
     Some((mid, fold(&items[..mid]), fold(&items[mid..])))

@@ -76,27 +76,108 @@ impl<F: Float> Found<F> {
 }
 
 /// Up to four parts of one kind, tested together; lanes hold parts in [`Key`] order and
-/// unused lanes the key `(NONE, 0)`.
+/// unused lanes the key `(NONE, 0)`. A view into [`Packets`].
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Packet<F> {
-    lanes: Lanes<F>,
-    keys: [Key; LANES],
+pub(super) struct Packet<'a, F> {
+    lanes: Lanes<'a, F>,
+    keys: &'a [Key; LANES],
 }
 
 /// A packet's parts, as they are tested.
 #[derive(Clone, Copy, Debug)]
-enum Lanes<F> {
+enum Lanes<'a, F> {
     /// Spheres, in SIMD lanes.
-    Spheres(Sphere4<F>),
+    Spheres(&'a Sphere4<F>),
     /// A lone sphere, tested alone: cheaper than lanes left empty.
-    Sphere(Sphere<F>),
+    Sphere(&'a Sphere<F>),
     /// Triangles, in SIMD lanes.
-    Triangles(Triangle4<F>),
+    Triangles(&'a Triangle4<F>),
     /// Other parts, each through its shape's [`Hittable::intersect_part`].
     Others,
 }
 
-impl<F: Float> Packet<F> {
+/// Packets numbered in the order made, each kind's lanes in an array of its own: a packet of
+/// spheres (64 bytes of lanes in f32) takes no more room than it needs, where one array of
+/// packets would give each the room of four triangles' (144).
+#[derive(Clone, Debug, Default)]
+pub(super) struct Packets<F> {
+    /// Packet `k`'s kind (the top two bits, [`kind`]'s number, 3 for a lone sphere) and its
+    /// place in that kind's array.
+    slots: Vec<u32>,
+    keys: Vec<[Key; LANES]>,
+    spheres: Vec<Sphere4<F>>,
+    lone: Vec<Sphere<F>>,
+    triangles: Vec<Triangle4<F>>,
+}
+
+/// The bits of a [`Packets`] slot that hold the place.
+const PLACE: u32 = (1 << 30) - 1;
+
+impl<F: Float> Packets<F> {
+    /// How many packets there are.
+    pub(super) fn len(&self) -> usize {
+        self.slots.len()
+    }
+
+    /// Packet `k`.
+    #[inline(always)]
+    pub(super) fn get(&self, k: usize) -> Packet<'_, F> {
+        let slot = self.slots[k];
+        let place = (slot & PLACE) as usize;
+        let lanes = match slot >> 30 {
+            0 => Lanes::Spheres(&self.spheres[place]),
+            1 => Lanes::Triangles(&self.triangles[place]),
+            3 => Lanes::Sphere(&self.lone[place]),
+            _ => Lanes::Others,
+        };
+        Packet {
+            lanes,
+            keys: &self.keys[k],
+        }
+    }
+
+    /// Every packet, in order.
+    pub(super) fn iter(&self) -> impl Iterator<Item = Packet<'_, F>> {
+        (0..self.len()).map(|k| self.get(k))
+    }
+
+    /// Appends a packet of the parts `keys` (in key order) whose lanes sit at `place` in
+    /// the array of kind `kind`.
+    fn push(&mut self, kind: u32, place: usize, keys: impl Iterator<Item = Key>) {
+        let place = u32::try_from(place)
+            .ok()
+            .filter(|&p| p <= PLACE)
+            .expect("at most 2³⁰ packets of one kind");
+        let mut lanes = [(NONE, 0); LANES];
+        for (lane, key) in keys.enumerate() {
+            lanes[lane] = key;
+        }
+        self.slots.push(kind << 30 | place);
+        self.keys.push(lanes);
+    }
+
+    /// Makes room for exactly the packets of `leaves`, each given as its parts' [`kind`]
+    /// and their count (at most four): a BVH's leaves, one packet each.
+    pub(super) fn reserve_leaves(&mut self, leaves: impl Iterator<Item = (u8, usize)>) {
+        // Packets by slot kind: spheres, triangles, others, lone spheres.
+        let mut count = [0; 4];
+        for (kind, parts) in leaves {
+            count[if kind == 0 && parts == 1 {
+                3
+            } else {
+                usize::from(kind)
+            }] += 1;
+        }
+        let all = count.iter().sum();
+        self.slots.reserve_exact(all);
+        self.keys.reserve_exact(all);
+        self.spheres.reserve_exact(count[0]);
+        self.triangles.reserve_exact(count[1]);
+        self.lone.reserve_exact(count[3]);
+    }
+}
+
+impl<F: Float> Packet<'_, F> {
     /// Offers each lane's intersection with each ray `rays[r]`, for `r` in `which`, to that
     /// ray's nearest `(nearest[r], found[r])`. A lane is asked with no bound, so the
     /// answer cannot depend on the order packets are visited in.
@@ -112,7 +193,7 @@ impl<F: Float> Packet<F> {
         // All cut to one length: one bounds check serves the three.
         let (rays, found) = (&rays[..nearest.len()], &mut found[..nearest.len()]);
         // The kind is matched once for all the rays.
-        match &self.lanes {
+        match self.lanes {
             Lanes::Spheres(s) => {
                 for r in which {
                     let t = s.hits(&rays[r]);
@@ -160,13 +241,13 @@ impl<F: Float> Packet<F> {
     /// The lanes' parts.
     #[cfg(test)]
     pub(super) fn keys(&self) -> &[Key; LANES] {
-        &self.keys
+        self.keys
     }
 
     /// Whether a lane's part blocks `ray` in `(0, t_max)`.
     #[inline(always)]
     pub(super) fn any<S: Layout<F>, M>(&self, objects: &[Object<S, M>], ray: &Ray<F>, t_max: F) -> bool {
-        match &self.lanes {
+        match self.lanes {
             Lanes::Spheres(s) => s.any(ray, t_max),
             Lanes::Sphere(s) => s.intersect(ray, F::infinity()).is_some_and(|i| i.t < t_max),
             Lanes::Triangles(t) => t.any(ray, t_max),
@@ -218,7 +299,7 @@ impl<F: Float> Packer<F> {
         &mut self,
         keys: &mut [Key],
         objects: &[Object<S, M>],
-        out: &mut Vec<Packet<F>>,
+        out: &mut Packets<F>,
     ) {
         keys.sort_unstable();
         let (spheres, triangles, others) = (&mut self.spheres, &mut self.triangles, &mut self.others);
@@ -232,34 +313,25 @@ impl<F: Float> Packer<F> {
                 Primitive::Other => others.push(key),
             }
         }
-        let keys_of = |chunk: &mut dyn Iterator<Item = Key>| {
-            let mut keys = [(NONE, 0); LANES];
-            for (lane, key) in chunk.enumerate() {
-                keys[lane] = key;
-            }
-            keys
-        };
         for chunk in spheres.chunks(LANES) {
-            let lanes = match chunk {
-                [(_, lone)] => Lanes::Sphere(*lone),
-                _ => Lanes::Spheres(Sphere4::new(chunk.iter().map(|&(_, s)| s))),
-            };
-            out.push(Packet {
-                lanes,
-                keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
-            });
+            let keys = chunk.iter().map(|&(k, _)| k);
+            match chunk {
+                [(_, lone)] => {
+                    out.push(3, out.lone.len(), keys);
+                    out.lone.push(*lone);
+                }
+                _ => {
+                    out.push(0, out.spheres.len(), keys);
+                    out.spheres.push(Sphere4::new(chunk.iter().map(|&(_, s)| s)));
+                }
+            }
         }
         for chunk in triangles.chunks(LANES) {
-            out.push(Packet {
-                lanes: Lanes::Triangles(Triangle4::new(chunk.iter().map(|&(_, v)| v))),
-                keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
-            });
+            out.push(1, out.triangles.len(), chunk.iter().map(|&(k, _)| k));
+            out.triangles.push(Triangle4::new(chunk.iter().map(|&(_, v)| v)));
         }
         for chunk in others.chunks(LANES) {
-            out.push(Packet {
-                lanes: Lanes::Others,
-                keys: keys_of(&mut chunk.iter().copied()),
-            });
+            out.push(2, 0, chunk.iter().copied());
         }
     }
 }

@@ -45,7 +45,7 @@ fn a_leaf_is_one_packet_of_one_kind() {
             usize::from(others),
             "the plane alone is looped"
         );
-        for p in index.looped.iter().chain(&index.leaves) {
+        for p in index.looped.iter().chain(index.leaves.iter()) {
             let used: Vec<_> = p.keys().iter().filter(|k| k.0 != NONE).collect();
             assert!(used.windows(2).all(|w| w[0] < w[1]), "lanes in key order");
         }
@@ -235,29 +235,25 @@ fn the_index_is_the_naive_loop() {
 }
 
 /// The sizes docs/PERFORMANCE.md gives for a scene's memory per part: a change of layout
-/// must update the document too.
+/// must update the document too. A packet costs its lanes, its four keys and its slot.
 #[test]
 fn sizes_are_the_documented_ones() {
     use crate::material::MaterialKind;
+    use crate::shape::{Sphere4, Triangle4};
     use std::mem::size_of;
-    let sizes = |name: &str, object: usize, packet: usize, node: usize| {
-        println!("{name}: object {object} B, packet {packet} B, wide node {node} B");
-        (object, packet, node)
-    };
-    let f32s = sizes(
-        "f32",
-        size_of::<Object<ShapeKind<f32>, MaterialKind<f32>>>(),
-        size_of::<packet::Packet<f32>>(),
-        crate::bvh::wide_node_bytes::<f32>(),
-    );
-    let f64s = sizes(
-        "f64",
-        size_of::<Object<ShapeKind<f64>, MaterialKind<f64>>>(),
-        size_of::<packet::Packet<f64>>(),
-        crate::bvh::wide_node_bytes::<f64>(),
-    );
-    assert_eq!(f32s, (72, 180, 160));
-    assert_eq!(f64s, (136, 328, 256));
+    fn sizes<F: Float>() -> [usize; 4] {
+        let packet = size_of::<[packet::Key; crate::lanes::LANES]>() + size_of::<u32>();
+        let sizes = [
+            size_of::<Object<ShapeKind<F>, MaterialKind<F>>>(),
+            size_of::<Sphere4<F>>() + packet,
+            size_of::<Triangle4<F>>() + packet,
+            crate::bvh::wide_node_bytes::<F>(),
+        ];
+        println!("object, sphere packet, triangle packet, wide node: {sizes:?} B");
+        sizes
+    }
+    assert_eq!(sizes::<f32>(), [72, 100, 180, 160]);
+    assert_eq!(sizes::<f64>(), [136, 164, 324, 256]);
 }
 
 /// The plain loop over the objects (`Acceleration::Linear`) and the packets in lanes a
