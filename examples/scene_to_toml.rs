@@ -127,10 +127,11 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
     };
     let mut named: Vec<(MaterialKind<f64>, String)> = Vec::new();
     for o in e.scene.objects() {
-        let material = match named.iter().find(|(m, _)| *m == o.material) {
+        let m = e.scene.material(o.material);
+        let material = match named.iter().find(|(known, _)| known == m) {
             Some((_, name)) => name.clone(),
             None => {
-                let (kind, spec) = material(&o.material).ok_or_else(|| {
+                let (kind, spec) = material(m).ok_or_else(|| {
                     let why = format!(
                         "{}: only the specification's materials and emitters are written",
                         e.name
@@ -139,7 +140,7 @@ fn to_file(e: &Example) -> raytrace::Result<SceneFile> {
                 })?;
                 let name = format!("{kind}_{}", named.len());
                 file.materials.insert(name.clone(), spec);
-                named.push((o.material.clone(), name.clone()));
+                named.push((m.clone(), name.clone()));
                 name
             }
         };

@@ -11,19 +11,35 @@ use crate::light::{Emitters, Light};
 use crate::material::{Material, MaterialKind, SharedMaterial};
 use crate::ray::Ray;
 use crate::shape::{Hit, Hittable, ShapeKind};
+pub use index::HitOn;
 use index::Index;
 pub(crate) use index::Nearests;
 pub use layout::{Layout, Primitive};
 use std::marker::PhantomData;
 use std::sync::{Arc, OnceLock};
 
-/// One object of a scene: a shape and the material it is made of.
+/// One object of a scene: a shape and the material it is made of, by default the
+/// material's place in the scene's table ([`Scene::material`]), so that objects made of
+/// one material share it (an object is 48 bytes in f32, where
+/// a copy of the material made it 72).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Object<S, M> {
+pub struct Object<S, M = MaterialId> {
     /// The geometry.
     pub shape: S,
     /// The material.
     pub material: M,
+}
+
+/// A material in a scene's table: what [`Scene::add_material`] returns and
+/// [`Scene::add_object`] takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct MaterialId(u32);
+
+impl MaterialId {
+    /// Its place in [`Scene::materials`].
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
 }
 
 /// Objects, lights and background, generic over the shape type `S` and the material
@@ -38,9 +54,14 @@ pub struct Object<S, M> {
 /// calls spheres and triangles (the enum fast path's, not trait objects) are tested four
 /// at a time, and only the nearest hit's record is made. The structure is built on the
 /// first query after a change.
+///
+/// The materials are a table of their own and each object holds its material's place in
+/// it ([`MaterialId`]): [`Scene::add`] adds a material for each object, while
+/// [`Scene::add_material`] and [`Scene::add_object`] let many objects share one.
 #[derive(Clone, Debug)]
 pub struct Scene<F, S, M> {
-    objects: Vec<Object<S, M>>,
+    objects: Vec<Object<S>>,
+    materials: Vec<M>,
     lights: Vec<Light<F>>,
     background: Background<F>,
     background_sampled: bool,
@@ -88,16 +109,8 @@ impl<F: Float> EnumScene<F> {
         let mut scene = DynScene::new(self.background.clone());
         scene.set_background_sampled(self.background_sampled);
         scene.set_acceleration(self.acceleration);
-        for o in &self.objects {
-            let shape: Box<dyn Hittable<F> + Send + Sync> = match &o.shape {
-                ShapeKind::Sphere(s) => Box::new(*s),
-                ShapeKind::Plane(p) => Box::new(*p),
-                ShapeKind::Triangle(t) => Box::new(*t),
-                ShapeKind::Disk(d) => Box::new(Arc::clone(d)),
-                ShapeKind::Mesh(m) => Box::new(Arc::clone(m)),
-                ShapeKind::Instance(i) => Box::new(Arc::clone(i)),
-            };
-            let material: SharedMaterial<F> = match &o.material {
+        for m in &self.materials {
+            let material: SharedMaterial<F> = match m {
                 MaterialKind::Mirror(m) => Arc::new(*m).into(),
                 MaterialKind::Lambertian(m) => Arc::new(m.clone()).into(),
                 MaterialKind::Dielectric(m) => Arc::new(*m).into(),
@@ -111,7 +124,18 @@ impl<F: Float> EnumScene<F> {
                 MaterialKind::RoughPlastic(m) => Arc::clone(m).into(),
                 MaterialKind::TwoSided(m) => Arc::clone(m).into(),
             };
-            scene.add(shape, material);
+            scene.add_material(material);
+        }
+        for o in &self.objects {
+            let shape: Box<dyn Hittable<F> + Send + Sync> = match &o.shape {
+                ShapeKind::Sphere(s) => Box::new(*s),
+                ShapeKind::Plane(p) => Box::new(*p),
+                ShapeKind::Triangle(t) => Box::new(*t),
+                ShapeKind::Disk(d) => Box::new(Arc::clone(d)),
+                ShapeKind::Mesh(m) => Box::new(Arc::clone(m)),
+                ShapeKind::Instance(i) => Box::new(Arc::clone(i)),
+            };
+            scene.add_object(shape, o.material);
         }
         for &light in &self.lights {
             scene.add_light(light);
@@ -125,6 +149,7 @@ impl<F: Float, S, M> Scene<F, S, M> {
     pub fn new(background: Background<F>) -> Self {
         Self {
             objects: Vec::new(),
+            materials: Vec::new(),
             lights: Vec::new(),
             background,
             background_sampled: false,
@@ -147,15 +172,54 @@ impl<F: Float, S, M> Scene<F, S, M> {
         self
     }
 
-    /// Adds an object made of `shape` and `material`.
+    /// Adds an object made of `shape` and `material`, a material of its own: objects
+    /// that share one take less room added by [`Scene::add_object`].
     pub fn add(&mut self, shape: impl Into<S>, material: impl Into<M>) -> &mut Self {
+        let material = self.add_material(material);
+        self.add_object(shape, material)
+    }
+
+    /// Adds `material` to the table of materials, for objects to be made of.
+    ///
+    /// # Panics
+    /// With more than `u32::MAX` materials.
+    pub fn add_material(&mut self, material: impl Into<M>) -> MaterialId {
+        let id = u32::try_from(self.materials.len()).expect("a scene holds at most u32::MAX materials");
+        self.materials.push(material.into());
+        MaterialId(id)
+    }
+
+    /// Adds an object made of `shape` and the material `material` of this scene's table.
+    ///
+    /// # Panics
+    /// If `material` is not in the table (a [`MaterialId`] of another scene).
+    pub fn add_object(&mut self, shape: impl Into<S>, material: MaterialId) -> &mut Self {
+        assert!(
+            material.index() < self.materials.len(),
+            "{material:?} is not in this scene's table of {} materials",
+            self.materials.len()
+        );
         self.objects.push(Object {
             shape: shape.into(),
-            material: material.into(),
+            material,
         });
         self.index = OnceLock::new();
         self.emitters = OnceLock::new();
         self
+    }
+
+    /// The material `id` of the table.
+    ///
+    /// # Panics
+    /// If `id` is not in the table.
+    #[inline(always)]
+    pub fn material(&self, id: MaterialId) -> &M {
+        &self.materials[id.index()]
+    }
+
+    /// The table of materials, in the order added.
+    pub fn materials(&self) -> &[M] {
+        &self.materials
     }
 
     /// Adds a light: a [`PointLight`](crate::PointLight), a
@@ -167,7 +231,7 @@ impl<F: Float, S, M> Scene<F, S, M> {
     }
 
     /// The objects, in the order added.
-    pub fn objects(&self) -> &[Object<S, M>] {
+    pub fn objects(&self) -> &[Object<S>] {
         &self.objects
     }
 
@@ -226,14 +290,15 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Scene<F, S, M> {
     /// surface coordinates if the material [reads them](Material::reads_coordinates).
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &M)> {
-        let (hit, object) = self.hit_object(ray, t_max)?;
-        Some((hit, &object.material))
+        let (hit, _, material) = self.hit_object(ray, t_max)?;
+        Some((hit, material))
     }
 
-    /// [`Scene::hit`] with the whole object hit, shape and material.
+    /// [`Scene::hit`] with the object hit: the hit, the object (its shape and its
+    /// material's place in the table) and its material.
     #[inline]
-    pub fn hit_object(&self, ray: &Ray<F>, t_max: F) -> Option<(Hit<F>, &Object<S, M>)> {
-        self.index().hit(&self.objects, ray, t_max)
+    pub fn hit_object(&self, ray: &Ray<F>, t_max: F) -> Option<HitOn<'_, F, S, M>> {
+        self.index().hit(&self.objects, &self.materials, ray, t_max)
     }
 
     /// [`Scene::hit_object`] with no bound for each of `rays`, handed to `each(i, hit)` in
@@ -244,9 +309,10 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Scene<F, S, M> {
         &'s self,
         rays: &[Ray<F>],
         near: &mut Nearests<F>,
-        each: impl FnMut(usize, Option<(Hit<F>, &'s Object<S, M>)>),
+        each: impl FnMut(usize, Option<HitOn<'s, F, S, M>>),
     ) {
-        self.index().hit_all(&self.objects, rays, near, each);
+        self.index()
+            .hit_all(&self.objects, &self.materials, rays, near, each);
     }
 
     /// The objects that give off light and are sampled as lights, with the probability of
@@ -254,7 +320,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Scene<F, S, M> {
     #[inline]
     pub fn emitters(&self) -> &Emitters {
         self.emitters
-            .get_or_init(|| Emitters::new(self.objects.iter().map(|o| (&o.shape, &o.material))))
+            .get_or_init(|| Emitters::new(self.objects.iter().map(|o| (&o.shape, self.material(o.material)))))
     }
 }
 
@@ -270,8 +336,11 @@ impl<F: Float> EnumScene<F> {
         let mut out = EnumScene::new(self.background.cast()?);
         out.set_background_sampled(self.background_sampled);
         out.set_acceleration(self.acceleration);
+        for m in &self.materials {
+            out.add_material(m.cast()?);
+        }
         for o in &self.objects {
-            out.add(o.shape.cast()?, o.material.cast()?);
+            out.add_object(o.shape.cast()?, o.material);
         }
         for l in &self.lights {
             out.add_light(l.cast()?);
@@ -281,43 +350,4 @@ impl<F: Float> EnumScene<F> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::light::PointLight;
-    use crate::material::{Dielectric, Mirror};
-    use crate::shape::{Sphere, Triangle};
-    use crate::vec3::Vec3;
-
-    #[test]
-    fn cast_round_trip_and_rounding_failures() {
-        let mut scene = EnumScene::<f64>::new(Background::default());
-        scene.add(
-            Sphere::new(Vec3::new(0.1, 0.2, -3.0), 0.5).unwrap(),
-            Mirror::new(Vec3::splat(0.5)).unwrap(),
-        );
-        scene.add(
-            Triangle::new(Vec3::zero(), Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0)).unwrap(),
-            Dielectric::new(1.5).unwrap(),
-        );
-        scene.add_light(PointLight::new(Vec3::new(0.0, 5.0, 0.0), Vec3::splat(3.0)).unwrap());
-        let single: EnumScene<f32> = scene.cast().unwrap();
-        let back: EnumScene<f64> = single.cast().unwrap();
-        assert_eq!(back.objects().len(), 2);
-        assert_eq!(back.lights().len(), 1);
-        let ShapeKind::Sphere(s) = back.objects()[0].shape else {
-            panic!()
-        };
-        assert_eq!(s.radius(), 0.5);
-        assert_eq!(s.center().x, f64::from(0.1f32));
-
-        let mut tiny = EnumScene::<f64>::new(Background::default());
-        tiny.add(
-            Sphere::new(Vec3::zero(), 1e-50).unwrap(),
-            Mirror::new(Vec3::splat(0.5)).unwrap(),
-        );
-        assert!(
-            tiny.cast::<f32>().is_err(),
-            "a radius that underflows in f32 is an error"
-        );
-    }
-}
+mod tests;

@@ -40,7 +40,7 @@ fn translated(scene: &EnumScene<f64>, offset: f64) -> raytrace::Result<EnumScene
         };
         out.add(
             Sphere::new(s.center() + Vec3::splat(offset), s.radius())?,
-            o.material.clone(),
+            scene.material(o.material).clone(),
         );
     }
     Ok(out)

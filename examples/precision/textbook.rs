@@ -208,7 +208,7 @@ fn replace_spheres<F: Float>(
             ShapeKind::Sphere(s) => sphere(*s),
             other => StudyShape::Kind(other.clone()),
         };
-        out.add(shape, o.material.clone());
+        out.add(shape, scene.material(o.material).clone());
     }
     for l in scene.lights() {
         out.add_light(*l);

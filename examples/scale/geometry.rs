@@ -102,17 +102,18 @@ impl Geometry {
     pub fn scene<F: Float>(&self) -> raytrace::Result<EnumScene<F>> {
         let mut scene = EnumScene::<F>::new(Background::default());
         scene.set_acceleration(Acceleration::Bvh);
-        let matte = Lambertian::new(Vec3::splat(lit::<F>(0.5)))?;
+        // One material in the scene's table, shared by every object.
+        let matte = scene.add_material(Lambertian::new(Vec3::splat(lit::<F>(0.5)))?);
         let v = |[x, y, z]: [f32; 3]| Vec3::from_f64(x.into(), y.into(), z.into());
         match self {
             Self::Spheres(spheres) => {
                 for &[x, y, z, r] in spheres {
-                    scene.add(Sphere::new(v([x, y, z]), lit(r.into()))?, matte.clone());
+                    scene.add_object(Sphere::new(v([x, y, z]), lit(r.into()))?, matte);
                 }
             }
             Self::Mesh { vertices, triangles } => {
                 let vertices = vertices.iter().map(|&p| v(p)).collect();
-                scene.add(Mesh::new(vertices, triangles.clone())?, matte);
+                scene.add_object(Mesh::new(vertices, triangles.clone())?, matte);
             }
         }
         Ok(scene)

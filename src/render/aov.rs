@@ -145,7 +145,7 @@ where
     let mut depth = f64::INFINITY;
     for bounce in 0..=max_depth {
         let rays = u64::from(bounce) + 1;
-        let Some((hit, object)) = scene.hit_object(&ray, F::infinity()) else {
+        let Some((hit, _, material)) = scene.hit_object(&ray, F::infinity()) else {
             return Feature {
                 albedo: clamped(throughput * scene.background().color(ray.direction)),
                 normal: [0.0; 3],
@@ -156,7 +156,6 @@ where
         if bounce == 0 {
             depth = hit.t.to_f64();
         }
-        let material = &object.material;
         let wo = -ray.direction;
         // The direction the material draws, if light can come back along it.
         let drawn = material

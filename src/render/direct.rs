@@ -100,7 +100,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         // The same `choice` as without a background (`sky = 0`): `(c − 0)/(1 − 0) = c`.
         let (index, chosen) = emitters.choose((choice - self.sky) / (1.0 - self.sky));
         let object = &self.scene.objects()[index];
-        let Some(emission) = object.material.emits() else {
+        let Some(emission) = self.scene.material(object.material).emits() else {
             return Color::zero();
         };
         let above = hit.offset_origin(hit.normal);

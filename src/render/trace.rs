@@ -5,7 +5,7 @@ use crate::float::Float;
 use crate::light::{Emitters, power_heuristic};
 use crate::material::{BsdfVisitor, Emission, Material, Scatter};
 use crate::ray::Ray;
-use crate::scene::{Layout, Object, Scene};
+use crate::scene::{HitOn, Layout, Object, Scene};
 use crate::shape::Hit;
 use crate::vec3::Color;
 use rand::Rng;
@@ -168,7 +168,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
     pub(super) fn shade<R>(
         &mut self,
         ray: &Ray<F>,
-        hit: Option<(Hit<F>, &Object<S, M>)>,
+        hit: Option<HitOn<'_, F, S, M>>,
         depth: u32,
         arrival: Arrival<F>,
         rng: &mut R,
@@ -177,7 +177,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         R: Rng + ?Sized,
         M: Scatter<F, R>,
     {
-        let Some((hit, object)) = hit else {
+        let Some((hit, object, material)) = hit else {
             return Step::Done(self.escaped(ray, depth, arrival));
         };
         if depth >= self.max_depth {
@@ -192,7 +192,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
             arrival,
             rng,
         };
-        object.material.resolve(&hit, vertex)
+        material.resolve(&hit, vertex)
     }
 
     /// [`Tracer::shade`] of a hit on `object` below `max_depth`, asking `material`, the
@@ -208,7 +208,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         material: &B,
         ray: &Ray<F>,
         hit: Hit<F>,
-        object: &Object<S, M>,
+        object: &Object<S>,
         depth: u32,
         arrival: Arrival<F>,
         rng: &mut R,
@@ -300,7 +300,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         &self,
         ray: &Ray<F>,
         hit: Hit<F>,
-        object: &Object<S, M>,
+        object: &Object<S>,
         emission: Emission<F>,
         arrival: Arrival<F>,
         emitters: &Emitters,
@@ -324,7 +324,7 @@ struct Vertex<'t, 'a, F, S, M, R: ?Sized> {
     tracer: &'t mut Tracer<'a, F, S, M>,
     ray: &'t Ray<F>,
     hit: Hit<F>,
-    object: &'t Object<S, M>,
+    object: &'t Object<S>,
     depth: u32,
     arrival: Arrival<F>,
     rng: &'t mut R,

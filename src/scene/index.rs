@@ -21,7 +21,10 @@ use crate::material::Material;
 use crate::ray::Ray;
 use crate::shape::{Coordinates, Hit, Intersection};
 pub(crate) use packet::Found;
-use packet::{Key, Packer, Packets, kind};
+use packet::{Key, Looped, Packer, Packets, kind};
+
+/// A hit's record, the object hit and its material.
+pub type HitOn<'a, F, S, M> = (Hit<F>, &'a Object<S>, &'a M);
 
 /// Each ray's nearest hit so far in a batch ([`Index::hit_all`]), with the stream
 /// traversal's buffers; kept from batch to batch.
@@ -39,7 +42,7 @@ pub(super) struct Index<F> {
     plain: bool,
     /// The packets every ray tests: all the parts, or with a BVH the unbounded and the
     /// huge ones.
-    looped: Packets<F>,
+    looped: Vec<Looped<F>>,
     /// With a BVH, leaf `k`'s parts: one kind, one packet.
     leaves: Packets<F>,
     bvh: Option<Bvh<F>>,
@@ -73,7 +76,7 @@ impl<F: Float> Index<F> {
         let plain = acceleration == Acceleration::Linear || (!wanted && !keys().any(lanes));
         let mut index = Self {
             plain,
-            looped: Packets::default(),
+            looped: Vec::new(),
             leaves: Packets::default(),
             bvh: None,
         };
@@ -81,7 +84,9 @@ impl<F: Float> Index<F> {
             return index;
         }
         let mut looped: Vec<Key> = keys().filter(|k| !in_tree(k)).collect();
-        packer.pack(&mut looped, objects, &mut index.looped);
+        let mut packets = Packets::default();
+        packer.pack(&mut looped, objects, &mut packets);
+        index.looped = packets.iter().map(Looped::new).collect();
         if !wanted {
             return index;
         }
@@ -113,19 +118,19 @@ impl<F: Float> Index<F> {
     #[inline]
     pub(super) fn hit<'a, S: Layout<F>, M: Material<F>>(
         &self,
-        objects: &'a [Object<S, M>],
+        objects: &'a [Object<S>],
+        materials: &'a [M],
         ray: &Ray<F>,
         t_max: F,
-    ) -> Option<(Hit<F>, &'a Object<S, M>)> {
+    ) -> Option<HitOn<'a, F, S, M>> {
         if self.plain {
             let (hit, o) = plain::nearest(objects, ray, t_max)?;
-            let object = &objects[o as usize];
-            return Some((record(object, ray, &hit), object));
+            return Some(Self::record(objects, materials, ray, &hit, o));
         }
         let (mut nearest, mut found) = ([t_max], [Found::none()]);
         let rays = std::slice::from_ref(ray);
-        for p in self.looped.iter() {
-            p.offer(objects, rays, [0], &mut nearest, &mut found);
+        for p in &self.looped {
+            p.packet().offer(objects, rays, [0], &mut nearest, &mut found);
         }
         if let Some(bvh) = &self.bvh {
             bvh.traverse(ray, nearest[0], |k, _| {
@@ -137,7 +142,10 @@ impl<F: Float> Index<F> {
             });
         }
         // A part offered at exactly `t_max` may hold the place of nothing found.
-        (nearest[0] < t_max).then(|| Self::record(objects, ray, nearest[0], &found[0]))
+        (nearest[0] < t_max).then(|| {
+            let hit = found[0].intersection(nearest[0]);
+            Self::record(objects, materials, ray, &hit, found[0].key.0)
+        })
     }
 
     /// [`Index::hit`] with no bound for each of `rays`, handed to `each(i, hit)` in the
@@ -147,10 +155,11 @@ impl<F: Float> Index<F> {
     #[inline]
     pub(super) fn hit_all<'a, S: Layout<F>, M: Material<F>>(
         &self,
-        objects: &'a [Object<S, M>],
+        objects: &'a [Object<S>],
+        materials: &'a [M],
         rays: &[Ray<F>],
         near: &mut Nearests<F>,
-        mut each: impl FnMut(usize, Option<(Hit<F>, &'a Object<S, M>)>),
+        mut each: impl FnMut(usize, Option<HitOn<'a, F, S, M>>),
     ) {
         let Nearests { t, found, streams } = near;
         t.clear();
@@ -166,8 +175,8 @@ impl<F: Float> Index<F> {
                 }
             }
         }
-        for p in self.looped.iter() {
-            p.offer(objects, rays, 0..rays.len(), t, found);
+        for p in &self.looped {
+            p.packet().offer(objects, rays, 0..rays.len(), t, found);
         }
         if let Some(bvh) = &self.bvh {
             bvh.traverse_all(rays, t, streams, |k, reached, t| {
@@ -176,21 +185,31 @@ impl<F: Float> Index<F> {
             });
         }
         for (i, ray) in rays.iter().enumerate() {
-            let hit = (t[i] < F::infinity()).then(|| Self::record(objects, ray, t[i], &found[i]));
+            let hit = (t[i] < F::infinity()).then(|| {
+                Self::record(
+                    objects,
+                    materials,
+                    ray,
+                    &found[i].intersection(t[i]),
+                    found[i].key.0,
+                )
+            });
             each(i, hit);
         }
     }
 
-    /// The record of the nearest hit, at `t`, described by `found`, and the object hit.
+    /// The record of the intersection `hit` with object `o`, the object and its material.
     #[inline(always)]
     fn record<'a, S: Layout<F>, M: Material<F>>(
-        objects: &'a [Object<S, M>],
+        objects: &'a [Object<S>],
+        materials: &'a [M],
         ray: &Ray<F>,
-        t: F,
-        found: &Found<F>,
-    ) -> (Hit<F>, &'a Object<S, M>) {
-        let object = &objects[found.key.0 as usize];
-        (record(object, ray, &found.intersection(t)), object)
+        hit: &Intersection<F>,
+        o: u32,
+    ) -> HitOn<'a, F, S, M> {
+        let object = &objects[o as usize];
+        let material = &materials[object.material.index()];
+        (record(object, material, ray, hit), object, material)
     }
 
     /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.
@@ -199,7 +218,7 @@ impl<F: Float> Index<F> {
         if self.plain {
             return plain::any(objects, ray, t_max);
         }
-        self.looped.iter().any(|p| p.any(objects, ray, t_max))
+        self.looped.iter().any(|p| p.packet().any(objects, ray, t_max))
             || self
                 .bvh
                 .as_ref()
@@ -208,15 +227,16 @@ impl<F: Float> Index<F> {
 }
 
 /// The hit record of `object`'s intersection `hit`: the shape's [`finish`](crate::Hittable::finish),
-/// and its [`coordinates`](crate::Hittable::coordinates) if the material reads them.
+/// and its [`coordinates`](crate::Hittable::coordinates) if its material reads them.
 #[inline(always)]
 fn record<F: Float, S: Layout<F>, M: Material<F>>(
-    object: &Object<S, M>,
+    object: &Object<S>,
+    material: &M,
     ray: &Ray<F>,
     hit: &Intersection<F>,
 ) -> Hit<F> {
     let record = object.shape.finish(ray, hit);
-    if object.material.reads_coordinates() {
+    if material.reads_coordinates() {
         record.with(coordinates(&object.shape, ray, hit))
     } else {
         record

@@ -19,7 +19,7 @@ use crate::image::Tonemap;
 use crate::material::MaterialKind;
 use crate::mesh::MeshData;
 use crate::render::RenderSettings;
-use crate::scene::EnumScene;
+use crate::scene::{EnumScene, MaterialId};
 use crate::shape::{Instance, Mesh, Prototype, ShapeKind};
 use crate::transform::Affine;
 use crate::validate::{number, rule, show};
@@ -77,6 +77,7 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
     let materials = resolver.materials::<F>()?;
     let mut summary = Summary::default();
     let prototypes = prototypes(&root, file, folder)?;
+    let mut ids = BTreeMap::new();
     for (i, object) in file.objects.iter().enumerate() {
         let at = root.key("objects").index(i);
         if super::obj_materials::wants_mtl(object) {
@@ -89,11 +90,15 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
             )?;
             continue;
         }
-        let Some(m) = materials.get(object.material()).cloned() else {
+        let Some(m) = materials.get(object.material()) else {
             return Err(at
                 .key("material")
                 .error(unknown_material(object.material(), &materials)));
         };
+        // Objects of one named material share its place in the scene's table.
+        let m = *ids
+            .entry(object.material())
+            .or_insert_with(|| scene.add_material(m.clone()));
         add_object(
             &mut scene,
             &mut summary,
@@ -194,7 +199,7 @@ fn add_object<F: Float>(
     summary: &mut Summary,
     (root, at): (&KeyPath, &KeyPath),
     spec: &ObjectSpec,
-    material: MaterialKind<F>,
+    material: MaterialId,
     (folder, assets, prototypes): (&Path, &Assets, &BTreeMap<&str, Arc<Prototype>>),
 ) -> Result<()> {
     let solid = match *spec {
@@ -223,7 +228,7 @@ fn add_object<F: Float>(
             let attributes = Attributes::new(&path, face_normals, flip_tex_coords);
             let data = load_mesh(assets, folder, file).map_err(|e| at.key("file").wrap(e))?;
             let shape = mesh::<F>(root, at, &data, &placement, attributes, summary)?;
-            scene.add(shape, material);
+            scene.add_object(shape, material);
             return Ok(());
         }
         ObjectSpec::Instance {
@@ -247,12 +252,12 @@ fn add_object<F: Float>(
                 None => affine(at, scale.factors(), rotate, translate)?,
             };
             let instance = Instance::new(Arc::clone(prototype), to_world).map_err(|e| blame(root, at, e))?;
-            scene.add(ShapeKind::from(instance), material);
+            scene.add_object(ShapeKind::from(instance), material);
             return Ok(());
         }
     };
     let shape = checked::<F, _>(root, at, make::shape::<f64>(solid), make::shape::<F>(solid))?;
-    scene.add(shape, material);
+    scene.add_object(shape, material);
     Ok(())
 }
 

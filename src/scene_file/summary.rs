@@ -64,7 +64,11 @@ pub(super) fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
     summary.lights = scene.lights().len();
     // Asked of the material, not its kind: a normal map over an emitter still emits.
     let emits = |m: &MaterialKind<F>| m.emits().is_some();
-    summary.emitters = scene.objects().iter().filter(|o| emits(&o.material)).count();
+    summary.emitters = scene
+        .objects()
+        .iter()
+        .filter(|o| emits(scene.material(o.material)))
+        .count();
     summary.sampled_emitters = scene.emitters().len();
     summary.bounds = bounds;
     summary.uses_bvh = scene.uses_bvh();

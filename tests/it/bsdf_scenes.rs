@@ -228,9 +228,10 @@ fn cast_materials_are_the_materials_made_in_the_scalar() {
     let wide = file().build::<f64>().unwrap().scene;
     let narrow = file().build::<f32>().unwrap().scene;
     for (w, n) in wide.objects().iter().zip(narrow.objects()) {
-        let cast: MaterialKind<f32> = w.material.cast().unwrap();
-        assert_eq!(cast, n.material);
-        assert_eq!(cast.lobes(), w.material.lobes());
+        let (w, n) = (wide.material(w.material), narrow.material(n.material));
+        let cast: MaterialKind<f32> = w.cast().unwrap();
+        assert_eq!(&cast, n);
+        assert_eq!(cast.lobes(), w.lobes());
     }
 }
 

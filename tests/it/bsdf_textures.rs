@@ -79,7 +79,11 @@ fn made<F: Float>() -> Vec<MaterialKind<F>> {
 fn textured_parameters_are_the_librarys<F: Float>() {
     let file = SceneFile::parse(TEXTURED, Path::new("textured.toml")).unwrap();
     let built = file.build::<F>().unwrap().scene;
-    let got: Vec<_> = built.objects().iter().map(|o| o.material.clone()).collect();
+    let got: Vec<_> = built
+        .objects()
+        .iter()
+        .map(|o| built.material(o.material).clone())
+        .collect();
     assert_eq!(got, made::<F>());
     for m in &got {
         assert!(m.reads_coordinates(), "{m:?}");

@@ -58,7 +58,7 @@ fn naive_hit<F: Float>(scene: &EnumScene<F>, ray: &Ray<F>) -> Option<(Hit<F>, Ma
     for o in scene.objects() {
         let bound = best.as_ref().map_or(F::infinity(), |(h, _)| h.t);
         if let Some(hit) = o.shape.hit(ray, bound) {
-            best = Some((hit, o.material.clone()));
+            best = Some((hit, scene.material(o.material).clone()));
         }
     }
     best

@@ -244,12 +244,12 @@ fn scene_files_describe_emitters() {
         .two_sided(true)
         .with_albedo(v(0.5, 0.5, 0.5))
         .unwrap();
-    assert_eq!(built.scene.objects()[0].material, MaterialKind::from(want));
+    assert_eq!(built.scene.materials(), [MaterialKind::from(want)]);
     assert_eq!((built.summary.emitters, built.summary.sampled_emitters), (1, 1));
     let defaults = parse("type = \"emissive\"\nradiance = [1, 2, 3]").unwrap();
     assert_eq!(
-        defaults.scene.objects()[0].material,
-        MaterialKind::from(Emissive::new(v(1.0, 2.0, 3.0)).unwrap())
+        defaults.scene.materials(),
+        [MaterialKind::from(Emissive::new(v(1.0, 2.0, 3.0)).unwrap())]
     );
     let message = |material: &str| match parse(material) {
         Err(e @ Error::SceneFile { .. }) => e.to_string(),

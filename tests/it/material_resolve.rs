@@ -127,7 +127,10 @@ fn materials() -> Vec<(String, MaterialKind<f64>)> {
             .unwrap();
     let built = file.build::<f64>().unwrap();
     for (k, object) in built.scene.objects().iter().enumerate() {
-        all.push((format!("scene file object {k}"), object.material.clone()));
+        all.push((
+            format!("scene file object {k}"),
+            built.scene.material(object.material).clone(),
+        ));
     }
     all
 }

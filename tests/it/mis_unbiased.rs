@@ -112,7 +112,7 @@ fn brighter(scene: &EnumScene<f64>, factor: f64) -> EnumScene<f64> {
     let mut out = EnumScene::new(scene.background().clone());
     out.set_acceleration(scene.acceleration());
     for o in scene.objects() {
-        let material = match &o.material {
+        let material = match scene.material(o.material) {
             MaterialKind::Emissive(e) => {
                 let emission = e.emission();
                 let light = Emissive::new(emission.radiance() * factor).unwrap();
@@ -211,7 +211,7 @@ fn mis_and_scattered_rays_agree_with_an_environment_light() {
         let mut scene = EnumScene::new(sky(sun));
         scene.set_background_sampled(true);
         for o in base.objects() {
-            scene.add(o.shape.clone(), o.material.clone());
+            scene.add(o.shape.clone(), base.material(o.material).clone());
         }
         for &l in base.lights() {
             scene.add_light(l);

@@ -180,7 +180,7 @@ fn ke_makes_an_emitter_that_lights_another_surface() {
     let dir = Scratch::new("obj-lamp");
     let lit = lamp_scene(&dir, "4 4 4");
     assert_eq!((lit.summary.emitters, lit.summary.sampled_emitters), (1, 1));
-    let floor = &lit.scene.objects()[0].material;
+    let floor = lit.scene.material(lit.scene.objects()[0].material);
     assert!(matches!(floor, MaterialKind::Lambertian(_)), "{floor:?}");
     let sum = |b: &Built<f64>| -> f64 { image(b).pixels().iter().flatten().sum() };
     assert!(sum(&lit) > 1.0, "the floor is lit");
@@ -214,7 +214,12 @@ fn what_is_not_used_is_noted_with_its_file_and_line() {
     ] {
         assert!(notes.contains(words), "{words}\n{notes}");
     }
-    let materials: Vec<_> = b.scene.objects().iter().map(|o| &o.material).collect();
+    let materials: Vec<_> = b
+        .scene
+        .objects()
+        .iter()
+        .map(|o| b.scene.material(o.material))
+        .collect();
     assert!(
         matches!(materials[0], MaterialKind::Lambertian(_)),
         "{materials:?}"
@@ -281,7 +286,12 @@ fn the_documented_example_builds() {
         &dir,
         "[[objects]]\ntype = \"mesh\"\nfile = \"lamp.obj\"\ntranslate = [0, 0, -3]\nmaterial = \"mtl\"\n",
     );
-    let materials: Vec<_> = b.scene.objects().iter().map(|o| &o.material).collect();
+    let materials: Vec<_> = b
+        .scene
+        .objects()
+        .iter()
+        .map(|o| b.scene.material(o.material))
+        .collect();
     assert!(
         matches!(materials[0], MaterialKind::NormalMap(_)),
         "{materials:?}"

@@ -168,7 +168,7 @@ fn each_ray_alone<F: Float>(acceleration: Acceleration) {
             rays.len()
         );
         for (ray, distance) in &rays {
-            let (hit, _) = scene.hit_object(ray, F::infinity()).unwrap();
+            let (hit, _, _) = scene.hit_object(ray, F::infinity()).unwrap();
             let t = hit.t.to_f64();
             assert!(
                 (t - distance).abs() <= distance * F::epsilon().to_f64().sqrt(),

@@ -96,18 +96,25 @@ enum Lanes<'a, F> {
     Others,
 }
 
-/// Packets numbered in the order made, each kind's lanes in an array of its own: a packet of
+/// Lanes of one kind with their parts.
+#[derive(Clone, Copy, Debug)]
+struct Keyed<T> {
+    lanes: T,
+    keys: [Key; LANES],
+}
+
+/// Packets numbered in the order made, each kind in an array of its own: a packet of
 /// spheres (64 bytes of lanes in f32) takes no more room than it needs, where one array of
 /// packets would give each the room of four triangles' (144).
 #[derive(Clone, Debug, Default)]
 pub(super) struct Packets<F> {
-    /// Packet `k`'s kind (the top two bits, [`kind`]'s number, 3 for a lone sphere) and its
+    /// Packet `k`'s kind (the top two bits: [`kind`]'s number, 3 for a lone sphere) and its
     /// place in that kind's array.
     slots: Vec<u32>,
-    keys: Vec<[Key; LANES]>,
-    spheres: Vec<Sphere4<F>>,
-    lone: Vec<Sphere<F>>,
-    triangles: Vec<Triangle4<F>>,
+    spheres: Vec<Keyed<Sphere4<F>>>,
+    triangles: Vec<Keyed<Triangle4<F>>>,
+    others: Vec<[Key; LANES]>,
+    lone: Vec<Keyed<Sphere<F>>>,
 }
 
 /// The bits of a [`Packets`] slot that hold the place.
@@ -124,15 +131,43 @@ impl<F: Float> Packets<F> {
     pub(super) fn get(&self, k: usize) -> Packet<'_, F> {
         let slot = self.slots[k];
         let place = (slot & PLACE) as usize;
-        let lanes = match slot >> 30 {
-            0 => Lanes::Spheres(&self.spheres[place]),
-            1 => Lanes::Triangles(&self.triangles[place]),
-            3 => Lanes::Sphere(&self.lone[place]),
-            _ => Lanes::Others,
-        };
+        match slot >> 30 {
+            0 => Self::spheres(&self.spheres[place]),
+            1 => Self::triangles(&self.triangles[place]),
+            2 => Self::others(&self.others[place]),
+            _ => Self::lone(&self.lone[place]),
+        }
+    }
+
+    #[inline(always)]
+    fn spheres(p: &Keyed<Sphere4<F>>) -> Packet<'_, F> {
         Packet {
-            lanes,
-            keys: &self.keys[k],
+            lanes: Lanes::Spheres(&p.lanes),
+            keys: &p.keys,
+        }
+    }
+
+    #[inline(always)]
+    fn triangles(p: &Keyed<Triangle4<F>>) -> Packet<'_, F> {
+        Packet {
+            lanes: Lanes::Triangles(&p.lanes),
+            keys: &p.keys,
+        }
+    }
+
+    #[inline(always)]
+    fn others(keys: &[Key; LANES]) -> Packet<'_, F> {
+        Packet {
+            lanes: Lanes::Others,
+            keys,
+        }
+    }
+
+    #[inline(always)]
+    fn lone(p: &Keyed<Sphere<F>>) -> Packet<'_, F> {
+        Packet {
+            lanes: Lanes::Sphere(&p.lanes),
+            keys: &p.keys,
         }
     }
 
@@ -141,19 +176,14 @@ impl<F: Float> Packets<F> {
         (0..self.len()).map(|k| self.get(k))
     }
 
-    /// Appends a packet of the parts `keys` (in key order) whose lanes sit at `place` in
-    /// the array of kind `kind`.
-    fn push(&mut self, kind: u32, place: usize, keys: impl Iterator<Item = Key>) {
+    /// Appends packet number `len()`, of kind `kind` (as a slot holds it), which is to be
+    /// pushed at `place` of its kind's array.
+    fn push_slot(&mut self, kind: u32, place: usize) {
         let place = u32::try_from(place)
             .ok()
             .filter(|&p| p <= PLACE)
             .expect("at most 2³⁰ packets of one kind");
-        let mut lanes = [(NONE, 0); LANES];
-        for (lane, key) in keys.enumerate() {
-            lanes[lane] = key;
-        }
         self.slots.push(kind << 30 | place);
-        self.keys.push(lanes);
     }
 
     /// Makes room for exactly the packets of `leaves`, each given as its parts' [`kind`]
@@ -168,11 +198,10 @@ impl<F: Float> Packets<F> {
                 usize::from(kind)
             }] += 1;
         }
-        let all = count.iter().sum();
-        self.slots.reserve_exact(all);
-        self.keys.reserve_exact(all);
+        self.slots.reserve_exact(count.iter().sum());
         self.spheres.reserve_exact(count[0]);
         self.triangles.reserve_exact(count[1]);
+        self.others.reserve_exact(count[2]);
         self.lone.reserve_exact(count[3]);
     }
 }
@@ -266,6 +295,55 @@ impl<F: Float> Packet<'_, F> {
     }
 }
 
+/// A packet of a scene's loop, its lanes inline: the loop's packets are few and every ray
+/// tests them all, so they sit in one array in order, where a BVH's leaves, many and visited
+/// one by one, are [`Packets`] stored by kind.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Looped<F> {
+    lanes: Inline<F>,
+    keys: [Key; LANES],
+}
+
+/// [`Lanes`] held inline.
+#[derive(Clone, Copy, Debug)]
+enum Inline<F> {
+    Spheres(Sphere4<F>),
+    Sphere(Sphere<F>),
+    Triangles(Triangle4<F>),
+    Others,
+}
+
+impl<F: Float> Looped<F> {
+    /// `packet` held inline.
+    pub(super) fn new(packet: Packet<'_, F>) -> Self {
+        let lanes = match packet.lanes {
+            Lanes::Spheres(s) => Inline::Spheres(*s),
+            Lanes::Sphere(s) => Inline::Sphere(*s),
+            Lanes::Triangles(t) => Inline::Triangles(*t),
+            Lanes::Others => Inline::Others,
+        };
+        Self {
+            lanes,
+            keys: *packet.keys,
+        }
+    }
+
+    /// The packet it holds.
+    #[inline(always)]
+    pub(super) fn packet(&self) -> Packet<'_, F> {
+        let lanes = match &self.lanes {
+            Inline::Spheres(s) => Lanes::Spheres(s),
+            Inline::Sphere(s) => Lanes::Sphere(s),
+            Inline::Triangles(t) => Lanes::Triangles(t),
+            Inline::Others => Lanes::Others,
+        };
+        Packet {
+            lanes,
+            keys: &self.keys,
+        }
+    }
+}
+
 /// The kind of a part as a number, the BVH's class for it: a leaf holds one kind, so it
 /// is one packet.
 pub(super) fn kind<F>(primitive: &Primitive<F>) -> u8 {
@@ -313,25 +391,38 @@ impl<F: Float> Packer<F> {
                 Primitive::Other => others.push(key),
             }
         }
+        let keys_of = |chunk: &mut dyn Iterator<Item = Key>| {
+            let mut keys = [(NONE, 0); LANES];
+            for (lane, key) in chunk.enumerate() {
+                keys[lane] = key;
+            }
+            keys
+        };
         for chunk in spheres.chunks(LANES) {
-            let keys = chunk.iter().map(|&(k, _)| k);
-            match chunk {
-                [(_, lone)] => {
-                    out.push(3, out.lone.len(), keys);
-                    out.lone.push(*lone);
-                }
-                _ => {
-                    out.push(0, out.spheres.len(), keys);
-                    out.spheres.push(Sphere4::new(chunk.iter().map(|&(_, s)| s)));
-                }
+            if let [(key, lanes)] = *chunk {
+                out.push_slot(3, out.lone.len());
+                out.lone.push(Keyed {
+                    lanes,
+                    keys: keys_of(&mut std::iter::once(key)),
+                });
+            } else {
+                out.push_slot(0, out.spheres.len());
+                out.spheres.push(Keyed {
+                    lanes: Sphere4::new(chunk.iter().map(|&(_, s)| s)),
+                    keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
+                });
             }
         }
         for chunk in triangles.chunks(LANES) {
-            out.push(1, out.triangles.len(), chunk.iter().map(|&(k, _)| k));
-            out.triangles.push(Triangle4::new(chunk.iter().map(|&(_, v)| v)));
+            out.push_slot(1, out.triangles.len());
+            out.triangles.push(Keyed {
+                lanes: Triangle4::new(chunk.iter().map(|&(_, v)| v)),
+                keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
+            });
         }
         for chunk in others.chunks(LANES) {
-            out.push(2, 0, chunk.iter().copied());
+            out.push_slot(2, out.others.len());
+            out.others.push(keys_of(&mut chunk.iter().copied()));
         }
     }
 }

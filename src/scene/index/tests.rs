@@ -2,6 +2,7 @@
 
 use super::packet::NONE;
 use super::*;
+use crate::scene::MaterialId;
 use crate::shape::{Alone, Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
 use crate::vec3::Vec3;
 
@@ -45,7 +46,7 @@ fn a_leaf_is_one_packet_of_one_kind() {
             usize::from(others),
             "the plane alone is looped"
         );
-        for p in index.looped.iter().chain(index.leaves.iter()) {
+        for p in index.looped.iter().map(Looped::packet).chain(index.leaves.iter()) {
             let used: Vec<_> = p.keys().iter().filter(|k| k.0 != NONE).collect();
             assert!(used.windows(2).all(|w| w[0] < w[1]), "lanes in key order");
         }
@@ -76,7 +77,7 @@ impl crate::material::Material<f64> for Tag {
 
 /// Spheres of random sizes (each added twice, so that exact ties happen), triangles, a
 /// mesh (added twice too) and a plane, through the plain loop and through a BVH.
-fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, Tag>> {
+fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>>> {
     use crate::shape::Plane;
     use rand::{RngExt, SeedableRng};
     let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed);
@@ -120,9 +121,14 @@ fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>, Tag>> {
         .enumerate()
         .map(|(i, shape)| Object {
             shape,
-            material: Tag(i as u32),
+            material: MaterialId(i as u32),
         })
         .collect()
+}
+
+/// The table of materials for `objects`: object `i` is made of `Tag(i)`.
+fn tags<S>(objects: &[Object<S>]) -> Vec<Tag> {
+    (0..objects.len() as u32).map(Tag).collect()
 }
 
 /// The batch answers exactly as one ray at a time: the same record and object, for
@@ -139,6 +145,7 @@ fn a_batch_answers_like_single_rays() {
         (4, true, Acceleration::Bvh),
     ] {
         let objects = mixed(seed, triangles);
+        let tags = tags(&objects);
         let index = Index::build(&objects, acceleration);
         let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed + 10);
         let mut v = |s: f64| {
@@ -152,14 +159,14 @@ fn a_batch_answers_like_single_rays() {
         // Rays leaving the surfaces the first rays hit, as secondary rays do.
         let firsts: Vec<_> = rays
             .iter()
-            .filter_map(|r| index.hit(&objects, r, f64::INFINITY))
+            .filter_map(|r| index.hit(&objects, &tags, r, f64::INFINITY))
             .collect();
-        rays.extend(firsts.iter().filter_map(|(h, _)| {
+        rays.extend(firsts.iter().filter_map(|(h, _, _)| {
             let d = (h.normal + v(1.0)).try_normalize()?;
             Some(h.spawn(d))
         }));
         let (mut near, mut out) = (Nearests::default(), Vec::new());
-        index.hit_all(&objects, &rays, &mut near, |i, hit| {
+        index.hit_all(&objects, &tags, &rays, &mut near, |i, hit| {
             assert_eq!(i, out.len(), "in the rays' order");
             out.push(hit);
         });
@@ -167,9 +174,9 @@ fn a_batch_answers_like_single_rays() {
         let mut hits = 0;
         for (ray, got) in rays.iter().zip(&out) {
             let want = index
-                .hit(&objects, ray, f64::INFINITY)
-                .map(|(h, o)| (h, o.material));
-            assert_eq!(got.map(|(h, o)| (h, o.material)), want, "{ray:?}");
+                .hit(&objects, &tags, ray, f64::INFINITY)
+                .map(|(h, o, _)| (h, o.material));
+            assert_eq!(got.map(|(h, o, _)| (h, o.material)), want, "{ray:?}");
             hits += usize::from(want.is_some());
         }
         assert!(hits > rays.len() / 2, "most rays should hit something ({hits})");
@@ -201,6 +208,7 @@ fn the_index_is_the_naive_loop() {
     use rand::{RngExt, SeedableRng};
     for (seed, acceleration) in [(5, Acceleration::Linear), (6, Acceleration::Bvh)] {
         let objects = mixed(seed, true);
+        let tags = tags(&objects);
         let index = Index::build(&objects, acceleration);
         let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed);
         let mut v = |s: f64| {
@@ -217,8 +225,8 @@ fn the_index_is_the_naive_loop() {
             };
             let want = naive_loop(&objects, &ray);
             let got = index
-                .hit(&objects, &ray, f64::INFINITY)
-                .map(|(h, o)| (h, o.material));
+                .hit(&objects, &tags, &ray, f64::INFINITY)
+                .map(|(h, o, _)| (h, o.material));
             assert_eq!(got, want, "{ray:?}");
             hits += usize::from(want.is_some());
             for t_max in [1.0, 5.0, 12.0] {
@@ -238,13 +246,12 @@ fn the_index_is_the_naive_loop() {
 /// must update the document too. A packet costs its lanes, its four keys and its slot.
 #[test]
 fn sizes_are_the_documented_ones() {
-    use crate::material::MaterialKind;
     use crate::shape::{Sphere4, Triangle4};
     use std::mem::size_of;
     fn sizes<F: Float>() -> [usize; 4] {
         let packet = size_of::<[packet::Key; crate::lanes::LANES]>() + size_of::<u32>();
         let sizes = [
-            size_of::<Object<ShapeKind<F>, MaterialKind<F>>>(),
+            size_of::<Object<ShapeKind<F>>>(),
             size_of::<Sphere4<F>>() + packet,
             size_of::<Triangle4<F>>() + packet,
             crate::bvh::wide_node_bytes::<F>(),
@@ -252,8 +259,8 @@ fn sizes_are_the_documented_ones() {
         println!("object, sphere packet, triangle packet, wide node: {sizes:?} B");
         sizes
     }
-    assert_eq!(sizes::<f32>(), [72, 100, 180, 160]);
-    assert_eq!(sizes::<f64>(), [136, 164, 324, 256]);
+    assert_eq!(sizes::<f32>(), [48, 100, 180, 160]);
+    assert_eq!(sizes::<f64>(), [88, 164, 324, 256]);
 }
 
 /// The plain loop over the objects (`Acceleration::Linear`) and the packets in lanes a
@@ -262,6 +269,7 @@ fn sizes_are_the_documented_ones() {
 fn the_plain_loop_is_the_packed_loop() {
     use rand::{RngExt, SeedableRng};
     let objects: Vec<_> = mixed(7, true).into_iter().take(12).collect();
+    let tags = tags(&objects);
     let parts: u32 = objects.iter().map(|o| o.shape.parts()).sum();
     assert!(parts < Acceleration::AUTO_THRESHOLD as u32, "{parts} parts");
     let plain = Index::build(&objects, Acceleration::Linear);
@@ -287,11 +295,11 @@ fn the_plain_loop_is_the_packed_loop() {
             continue;
         };
         let want = packed
-            .hit(&objects, &ray, f64::INFINITY)
-            .map(|(h, o)| (h, o.material));
+            .hit(&objects, &tags, &ray, f64::INFINITY)
+            .map(|(h, o, _)| (h, o.material));
         let got = plain
-            .hit(&objects, &ray, f64::INFINITY)
-            .map(|(h, o)| (h, o.material));
+            .hit(&objects, &tags, &ray, f64::INFINITY)
+            .map(|(h, o, _)| (h, o.material));
         assert_eq!(got, want, "{ray:?}");
         hits += usize::from(want.is_some());
         for t_max in [1.0, 5.0, 12.0] {

@@ -181,7 +181,7 @@ fn study_scenes_use_the_textbook_method() {
     let study = textbook::to_textbook(&scene);
     assert!(matches!(study.objects()[0].shape, StudyShape::Textbook(_)));
     assert_eq!(study.objects()[1].shape, StudyShape::Kind(tri.into()));
-    assert_eq!(study.objects()[1].material, mirror.into());
+    assert_eq!(study.material(study.objects()[1].material), &mirror.into());
     assert_eq!(study.lights(), scene.lights());
     assert_eq!(study.background(), scene.background());
 

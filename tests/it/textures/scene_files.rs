@@ -60,11 +60,12 @@ fn the_documented_example_builds_and_shares_its_images() {
     );
     let objects = built.scene.objects();
     // The wood sphere and the carved one share one image, and the carving's map is raw.
-    let MaterialKind::Lambertian(wood) = &objects[1].material else {
-        panic!("{:?}", objects[1].material)
+    let material = |k: usize| built.scene.material(objects[k].material);
+    let MaterialKind::Lambertian(wood) = material(1) else {
+        panic!("{:?}", material(1))
     };
-    let MaterialKind::NormalMap(carved) = &objects[2].material else {
-        panic!("{:?}", objects[2].material)
+    let MaterialKind::NormalMap(carved) = material(2) else {
+        panic!("{:?}", material(2))
     };
     let (Texture::Image(a), MaterialKind::Lambertian(inner)) = (wood.albedo(), carved.material()) else {
         panic!("the wood is an image")
