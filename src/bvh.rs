@@ -69,6 +69,8 @@ impl<F: Float> Bvh<F> {
 
     /// [`Bvh::build`] over primitives given as `(box, class)`, where no leaf holds two
     /// classes: a scene gives each kind of shape a class, so that a leaf is tested one way.
+    /// The leaves are numbered class by class, every leaf of a lower class before any of a
+    /// higher one.
     ///
     /// # Panics
     /// With more than `u32::MAX` primitives.
@@ -342,7 +344,8 @@ mod tests {
         }
     }
 
-    /// No leaf mixes classes, even where boxes of both classes overlap exactly.
+    /// No leaf mixes classes, even where boxes of both classes overlap exactly, and the
+    /// leaves are numbered class by class.
     #[test]
     fn leaves_hold_one_class() {
         let boxes = random_boxes(2_000, 3);
@@ -352,6 +355,7 @@ mod tests {
             .enumerate()
             .flat_map(|(i, &b)| [(b, class(i)), (b, class(i + 1))]);
         let bvh = Bvh::build_classes(prims);
+        let mut last = 0;
         for k in 0..bvh.leaf_count() {
             let classes: Vec<u8> = bvh
                 .leaf(k)
@@ -359,7 +363,14 @@ mod tests {
                 .map(|&p| class(p as usize / 2 + p as usize % 2))
                 .collect();
             assert!(classes.windows(2).all(|w| w[0] == w[1]), "leaf {k}: {classes:?}");
+            assert!(
+                classes[0] >= last,
+                "leaf {k} of class {} after class {last}",
+                classes[0]
+            );
+            last = classes[0];
         }
+        assert_eq!(last, 2, "all three classes seen");
     }
 
     #[test]

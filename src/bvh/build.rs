@@ -24,7 +24,8 @@ const TASK: usize = 4096;
 pub(super) type Arrays<F> = (Vec<Node<F>>, Vec<u32>, Vec<(u32, u32)>);
 
 /// The binary tree over the primitives that `prims` yields as `(box, class)`, numbered in
-/// that order (empty for none); no leaf holds two classes.
+/// that order (empty for none); no leaf holds two classes, and the leaves are numbered class
+/// by class (see [`group_by_class`]).
 pub(super) fn build<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) -> Arrays<F> {
     let mut items: Vec<Item<F>> = prims
         .into_iter()
@@ -43,6 +44,7 @@ pub(super) fn build<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) ->
     // The partitions left the primitives in leaf order; the items go before the nodes are
     // laid out, so the two are never held at once.
     let indices = items.par_iter().map(|it| it.index).collect();
+    let classes: Vec<u8> = items.par_iter().map(|it| it.class).collect();
     drop(items);
     let (mut nodes, mut leaves) = (
         Vec::with_capacity(tree.nodes()),
@@ -50,7 +52,28 @@ pub(super) fn build<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) ->
     );
     nodes.push(empty_node());
     tree.flatten(0, &mut nodes, &mut leaves);
+    group_by_class(&mut nodes, &mut leaves, &classes);
     (nodes, indices, leaves)
+}
+
+/// Renumbers the leaves class by class (every leaf of class 0 first), in the order built
+/// within a class, so that a user keeping each class's leaves in an array of its own finds
+/// leaf `k`'s from `k` alone. A tree of one class is left as it is.
+fn group_by_class<F: Float>(nodes: &mut [Node<F>], leaves: &mut Vec<(u32, u32)>, classes: &[u8]) {
+    let class = |leaf: &(u32, u32)| classes[leaf.0 as usize];
+    if leaves.windows(2).all(|w| class(&w[0]) <= class(&w[1])) {
+        return;
+    }
+    let mut order: Vec<u32> = (0..leaves.len() as u32).collect();
+    order.sort_by_key(|&k| class(&leaves[k as usize]));
+    let mut place = vec![0; leaves.len()];
+    for (new, &old) in order.iter().enumerate() {
+        place[old as usize] = new as u32;
+    }
+    for node in nodes.iter_mut().filter(|n| n.count > 0) {
+        node.offset = place[node.offset as usize];
+    }
+    *leaves = order.iter().map(|&k| leaves[k as usize]).collect();
 }
 
 /// What the build reads of a primitive, copied once into one compact array (32 bytes in

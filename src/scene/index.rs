@@ -93,10 +93,8 @@ impl<F: Float> Index<F> {
         let tree_keys: Vec<Key> = keys().filter(in_tree).collect();
         let class = |k: &Key| kind(&shape(k).primitive(k.1));
         let bvh = Bvh::build_classes(tree_keys.iter().map(|k| (bounds(k).unwrap_or(whole), class(k))));
-        let leaves = (0..bvh.leaf_count())
-            .map(|k| bvh.leaf(k))
-            .map(|l| (class(&tree_keys[l[0] as usize]), l.len()));
-        index.leaves.reserve_leaves(leaves);
+        let kinds = (0..bvh.leaf_count()).map(|k| class(&tree_keys[bvh.leaf(k)[0] as usize]));
+        index.leaves.reserve_leaves(kinds);
         let mut leaf_keys = Vec::new();
         for k in 0..bvh.leaf_count() {
             leaf_keys.clear();

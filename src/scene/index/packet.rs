@@ -103,71 +103,54 @@ struct Keyed<T> {
     keys: [Key; LANES],
 }
 
-/// Packets numbered in the order made, each kind in an array of its own: a packet of
-/// spheres (64 bytes of lanes in f32) takes no more room than it needs, where one array of
-/// packets would give each the room of four triangles' (144).
-#[derive(Clone, Debug, Default)]
-pub(super) struct Packets<F> {
-    /// Packet `k`'s kind (the top two bits: [`kind`]'s number, 3 for a lone sphere) and its
-    /// place in that kind's array.
-    slots: Vec<u32>,
-    spheres: Vec<Keyed<Sphere4<F>>>,
-    triangles: Vec<Keyed<Triangle4<F>>>,
-    others: Vec<[Key; LANES]>,
-    lone: Vec<Keyed<Sphere<F>>>,
+/// A packet of spheres.
+#[derive(Clone, Copy, Debug)]
+enum Spheres<F> {
+    /// Up to four, in SIMD lanes.
+    Four(Sphere4<F>),
+    /// A lone sphere, tested alone: cheaper than lanes left empty.
+    One(Sphere<F>),
 }
 
-/// The bits of a [`Packets`] slot that hold the place.
-const PLACE: u32 = (1 << 30) - 1;
+/// Packets numbered in the order made, each kind in an array of its own, so that a packet
+/// of spheres (64 bytes of lanes in f32) takes no more room than it needs, where one array
+/// of packets would give each the room of four triangles' (144). The kinds come in order
+/// (every packet of spheres before any of triangles, those before the others'), as a BVH
+/// numbers its leaves ([`Bvh::build_classes`](crate::bvh::Bvh::build_classes)), so packet
+/// `k`'s kind and place follow from `k` and the arrays' lengths, with no table to read.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Packets<F> {
+    spheres: Vec<Keyed<Spheres<F>>>,
+    triangles: Vec<Keyed<Triangle4<F>>>,
+    others: Vec<[Key; LANES]>,
+}
 
 impl<F: Float> Packets<F> {
     /// How many packets there are.
     pub(super) fn len(&self) -> usize {
-        self.slots.len()
+        self.spheres.len() + self.triangles.len() + self.others.len()
     }
 
     /// Packet `k`.
     #[inline(always)]
     pub(super) fn get(&self, k: usize) -> Packet<'_, F> {
-        let slot = self.slots[k];
-        let place = (slot & PLACE) as usize;
-        match slot >> 30 {
-            0 => Self::spheres(&self.spheres[place]),
-            1 => Self::triangles(&self.triangles[place]),
-            2 => Self::others(&self.others[place]),
-            _ => Self::lone(&self.lone[place]),
+        if let Some(p) = self.spheres.get(k) {
+            let lanes = match &p.lanes {
+                Spheres::Four(s) => Lanes::Spheres(s),
+                Spheres::One(s) => Lanes::Sphere(s),
+            };
+            return Packet { lanes, keys: &p.keys };
         }
-    }
-
-    #[inline(always)]
-    fn spheres(p: &Keyed<Sphere4<F>>) -> Packet<'_, F> {
-        Packet {
-            lanes: Lanes::Spheres(&p.lanes),
-            keys: &p.keys,
+        let k = k - self.spheres.len();
+        if let Some(p) = self.triangles.get(k) {
+            return Packet {
+                lanes: Lanes::Triangles(&p.lanes),
+                keys: &p.keys,
+            };
         }
-    }
-
-    #[inline(always)]
-    fn triangles(p: &Keyed<Triangle4<F>>) -> Packet<'_, F> {
-        Packet {
-            lanes: Lanes::Triangles(&p.lanes),
-            keys: &p.keys,
-        }
-    }
-
-    #[inline(always)]
-    fn others(keys: &[Key; LANES]) -> Packet<'_, F> {
         Packet {
             lanes: Lanes::Others,
-            keys,
-        }
-    }
-
-    #[inline(always)]
-    fn lone(p: &Keyed<Sphere<F>>) -> Packet<'_, F> {
-        Packet {
-            lanes: Lanes::Sphere(&p.lanes),
-            keys: &p.keys,
+            keys: &self.others[k - self.triangles.len()],
         }
     }
 
@@ -176,33 +159,16 @@ impl<F: Float> Packets<F> {
         (0..self.len()).map(|k| self.get(k))
     }
 
-    /// Appends packet number `len()`, of kind `kind` (as a slot holds it), which is to be
-    /// pushed at `place` of its kind's array.
-    fn push_slot(&mut self, kind: u32, place: usize) {
-        let place = u32::try_from(place)
-            .ok()
-            .filter(|&p| p <= PLACE)
-            .expect("at most 2³⁰ packets of one kind");
-        self.slots.push(kind << 30 | place);
-    }
-
-    /// Makes room for exactly the packets of `leaves`, each given as its parts' [`kind`]
-    /// and their count (at most four): a BVH's leaves, one packet each.
-    pub(super) fn reserve_leaves(&mut self, leaves: impl Iterator<Item = (u8, usize)>) {
-        // Packets by slot kind: spheres, triangles, others, lone spheres.
-        let mut count = [0; 4];
-        for (kind, parts) in leaves {
-            count[if kind == 0 && parts == 1 {
-                3
-            } else {
-                usize::from(kind)
-            }] += 1;
+    /// Makes room for exactly the packets of `leaves`, each given as its parts' [`kind`]:
+    /// a BVH's leaves, one packet each.
+    pub(super) fn reserve_leaves(&mut self, leaves: impl Iterator<Item = u8>) {
+        let mut count = [0; 3];
+        for kind in leaves {
+            count[usize::from(kind)] += 1;
         }
-        self.slots.reserve_exact(count.iter().sum());
         self.spheres.reserve_exact(count[0]);
         self.triangles.reserve_exact(count[1]);
         self.others.reserve_exact(count[2]);
-        self.lone.reserve_exact(count[3]);
     }
 }
 
@@ -307,8 +273,7 @@ pub(super) struct Looped<F> {
 /// [`Lanes`] held inline.
 #[derive(Clone, Copy, Debug)]
 enum Inline<F> {
-    Spheres(Sphere4<F>),
-    Sphere(Sphere<F>),
+    Spheres(Spheres<F>),
     Triangles(Triangle4<F>),
     Others,
 }
@@ -317,8 +282,8 @@ impl<F: Float> Looped<F> {
     /// `packet` held inline.
     pub(super) fn new(packet: Packet<'_, F>) -> Self {
         let lanes = match packet.lanes {
-            Lanes::Spheres(s) => Inline::Spheres(*s),
-            Lanes::Sphere(s) => Inline::Sphere(*s),
+            Lanes::Spheres(s) => Inline::Spheres(Spheres::Four(*s)),
+            Lanes::Sphere(s) => Inline::Spheres(Spheres::One(*s)),
             Lanes::Triangles(t) => Inline::Triangles(*t),
             Lanes::Others => Inline::Others,
         };
@@ -332,8 +297,8 @@ impl<F: Float> Looped<F> {
     #[inline(always)]
     pub(super) fn packet(&self) -> Packet<'_, F> {
         let lanes = match &self.lanes {
-            Inline::Spheres(s) => Lanes::Spheres(s),
-            Inline::Sphere(s) => Lanes::Sphere(s),
+            Inline::Spheres(Spheres::Four(s)) => Lanes::Spheres(s),
+            Inline::Spheres(Spheres::One(s)) => Lanes::Sphere(s),
             Inline::Triangles(t) => Lanes::Triangles(t),
             Inline::Others => Lanes::Others,
         };
@@ -398,30 +363,29 @@ impl<F: Float> Packer<F> {
             }
             keys
         };
+        assert!(
+            out.triangles.is_empty() && out.others.is_empty() || spheres.is_empty(),
+            "packets come kind by kind"
+        );
         for chunk in spheres.chunks(LANES) {
-            if let [(key, lanes)] = *chunk {
-                out.push_slot(3, out.lone.len());
-                out.lone.push(Keyed {
-                    lanes,
-                    keys: keys_of(&mut std::iter::once(key)),
-                });
-            } else {
-                out.push_slot(0, out.spheres.len());
-                out.spheres.push(Keyed {
-                    lanes: Sphere4::new(chunk.iter().map(|&(_, s)| s)),
-                    keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
-                });
-            }
+            let lanes = match *chunk {
+                [(_, lone)] => Spheres::One(lone),
+                _ => Spheres::Four(Sphere4::new(chunk.iter().map(|&(_, s)| s))),
+            };
+            let keys = keys_of(&mut chunk.iter().map(|&(k, _)| k));
+            out.spheres.push(Keyed { lanes, keys });
         }
+        assert!(
+            out.others.is_empty() || triangles.is_empty(),
+            "packets come kind by kind"
+        );
         for chunk in triangles.chunks(LANES) {
-            out.push_slot(1, out.triangles.len());
             out.triangles.push(Keyed {
                 lanes: Triangle4::new(chunk.iter().map(|&(_, v)| v)),
                 keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
             });
         }
         for chunk in others.chunks(LANES) {
-            out.push_slot(2, out.others.len());
             out.others.push(keys_of(&mut chunk.iter().copied()));
         }
     }
