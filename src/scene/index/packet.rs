@@ -125,6 +125,12 @@ pub(super) struct Packets<F> {
     others: Vec<[Key; LANES]>,
 }
 
+/// The bytes of a packet of spheres and of one of triangles, lanes and keys.
+#[cfg(test)]
+pub(super) fn packet_bytes<F>() -> [usize; 2] {
+    [size_of::<Keyed<Spheres<F>>>(), size_of::<Keyed<Triangle4<F>>>()]
+}
+
 impl<F: Float> Packets<F> {
     /// How many packets there are.
     pub(super) fn len(&self) -> usize {
