@@ -53,6 +53,7 @@ mod lambertian_chi2;
 mod light_files;
 mod lights;
 mod material_resolve;
+mod material_table;
 mod mesh_attributes;
 mod meshes;
 mod mis_unbiased;
