@@ -14,10 +14,11 @@ use std::sync::Arc;
 pub enum ShapeKind<F> {
     /// A [`Sphere`].
     Sphere(Sphere<F>),
-    /// An infinite [`Plane`].
-    Plane(Plane<F>),
-    /// A [`Triangle`].
-    Triangle(Triangle<F>),
+    /// An infinite [`Plane`], shared: inline, it or the triangle would be the largest
+    /// variant and make every sphere's object 48 bytes in `f32` instead of 32.
+    Plane(Arc<Plane<F>>),
+    /// A [`Triangle`], shared for the same reason (a mesh's triangles are not objects).
+    Triangle(Arc<Triangle<F>>),
     /// A [`Disk`], shared: inline it would be the largest variant and grow every object of
     /// every scene (72 to 112 bytes in `f32`) for a shape few scenes have.
     Disk(Arc<Disk<F>>),
@@ -94,13 +95,13 @@ impl<F> From<Sphere<F>> for ShapeKind<F> {
 
 impl<F> From<Plane<F>> for ShapeKind<F> {
     fn from(p: Plane<F>) -> Self {
-        Self::Plane(p)
+        Self::Plane(Arc::new(p))
     }
 }
 
 impl<F> From<Triangle<F>> for ShapeKind<F> {
     fn from(t: Triangle<F>) -> Self {
-        Self::Triangle(t)
+        Self::Triangle(Arc::new(t))
     }
 }
 
