@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The scaling benchmark: this crate's renderer against an Embree 3 path tracer doing the same
-work, on sphere clouds of 10^2..10^6 spheres and the Stanford dragon at four resolutions.
+work, on sphere clouds of 10^2..10^6 spheres and the Stanford dragon at four resolutions
+(and, when asked, on `needles:N`, N long thin triangles every way oriented).
 
 Builds both programs, exports every scene once (examples/scale --export, read by
 bench/embree/scale.cpp), then for each scene runs every program R rounds, interleaved, each
@@ -13,6 +14,9 @@ run in its own process, and keeps the median of each figure. Writes
 
     python3 bench/scale.py                 # the full comparison (default settings)
     python3 bench/scale.py --quick         # a smoke test at 40x20, 1 spp, into /tmp
+    python3 bench/scale.py --bvh-quality both --threads 1 --scenes needles:100000,dragon:full \
+        --results bench/results/split --figure bench/results/split/split.svg
+                                           # our medium and high (spatial splits) builds
 No dependencies beyond Python 3.8.
 """
 
@@ -37,7 +41,7 @@ ALL_SCENES = [f"spheres:{10 ** k}" for k in range(2, 7)] + [
 ]
 COLUMNS = ["scene", "primitives", "program", "threads", "build_s", "mrays_s", "rays", "peak_mb"]
 COLORS = {"raytrace-f32": "#d62728", "raytrace-f64": "#ff9896", "embree-medium": "#1f77b4",
-          "embree-high": "#2ca02c"}
+          "embree-high": "#2ca02c", "raytrace-f32-high": "#9467bd", "raytrace-f64-high": "#c5b0d5"}
 
 
 def parse_args():
@@ -49,6 +53,8 @@ def parse_args():
     p.add_argument("--max-depth", type=int, default=10)
     p.add_argument("--scenes", default=",".join(ALL_SCENES), help="comma-separated scene names")
     p.add_argument("--precision", default="f32", choices=["f32", "f64"], help="our renderer's scalar")
+    p.add_argument("--bvh-quality", default="medium", choices=["medium", "high", "both"],
+                   help="our BVH build: medium, high (spatial splits) or both, as two programs")
     p.add_argument("--results", type=Path, default=ROOT / "bench" / "results")
     p.add_argument("--figure", type=Path, default=ROOT / "report" / "figures" / "scale.svg")
     p.add_argument("--no-build", action="store_true", help="use the programs as already built")
@@ -87,8 +93,12 @@ def programs(args, scene):
     common = ["--width", args.width, "--spp", args.spp, "--max-depth", args.max_depth, "--csv"]
     out = []
     for t in args.threads:
-        out.append((f"raytrace-{args.precision}", t,
-                    [OURS, "--scene", scene, "--threads", t, "--precision", args.precision] + common))
+        for quality in ("medium", "high"):
+            if args.bvh_quality in (quality, "both"):
+                suffix = "-high" if quality == "high" else ""
+                out.append((f"raytrace-{args.precision}{suffix}", t,
+                            [OURS, "--scene", scene, "--threads", t, "--precision", args.precision,
+                             "--bvh-quality", quality] + common))
         for quality in ("medium", "high"):
             out.append((f"embree-{quality}", t, [EMBREE, "--scene", scene_file(scene), "--name", scene,
                                                  "--threads", t, "--quality", quality] + common))
@@ -146,7 +156,11 @@ def conditions(args):
 
 
 def write_markdown(path, rows, args):
-    ours = {(r["scene"], r["threads"]): r for r in rows if r["program"].startswith("raytrace")}
+    # The rays are compared with our first program's (the medium build where there is one).
+    ours = {}
+    for r in sorted(rows, key=lambda r: r["program"]):
+        if r["program"].startswith("raytrace"):
+            ours.setdefault((r["scene"], r["threads"]), r)
     lines = [
         "# Scaling: this crate against Embree 3", "",
         conditions(args), "",
@@ -167,7 +181,7 @@ def write_figure(path, rows, threads):
     solid lines for the sphere clouds, dashed for the dragon."""
     series = []
     for program in sorted({r["program"] for r in rows}):
-        for family, dash in (("spheres", ""), ("dragon", "6 4")):
+        for family, dash in (("spheres", ""), ("dragon", "6 4"), ("needles", "2 3")):
             pts = [(r["primitives"], r["mrays_s"]) for r in rows if r["program"] == program
                    and r["threads"] == threads and r["scene"].startswith(family)]
             if pts:

@@ -27,6 +27,9 @@ struct Args {
     /// Threads of the rayon pool the build runs in.
     #[arg(long, default_value_t = 1)]
     threads: usize,
+    /// With spatial splits (`Bvh::build_split`): the mesh's triangles may be cut.
+    #[arg(long)]
+    split: bool,
     /// Also print a hash of the whole tree, to compare builds on different pools.
     #[arg(long)]
     fingerprint: bool,
@@ -37,6 +40,7 @@ struct Args {
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args = Args::parse();
+    let mut triangles: Vec<[Vec3<f32>; 3]> = Vec::new();
     let boxes: Vec<Aabb<f32>> = match &args.mesh {
         Some(path) => {
             let mesh = raytrace::mesh::load(path)?;
@@ -44,9 +48,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 let v = mesh.positions[i as usize];
                 Vec3::new(v.x as f32, v.y as f32, v.z as f32)
             };
-            mesh.triangles
+            triangles = mesh.triangles.iter().map(|t| t.map(p)).collect();
+            triangles
                 .iter()
-                .map(|t| Aabb::new(p(t[0]), p(t[1])).union(Aabb::new(p(t[2]), p(t[2]))))
+                .map(|t| Aabb::new(t[0], t[1]).union(Aabb::new(t[2], t[2])))
                 .collect()
         }
         None => {
@@ -68,11 +73,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .num_threads(args.threads)
         .build()?;
     let start = Instant::now();
-    let bvh = pool.install(|| Bvh::build(boxes.iter().copied()));
+    let bvh = pool.install(|| match args.split {
+        false => Bvh::build(boxes.iter().copied()),
+        true => Bvh::build_split(boxes.iter().map(|&b| (b, 0)), |i| {
+            triangles.get(i as usize).copied()
+        }),
+    });
+    let references: usize = (0..bvh.leaf_count()).map(|k| bvh.leaf(k).len()).sum();
     let seconds = start.elapsed().as_secs_f64();
     print!(
-        "{} boxes, {} threads: {seconds:.4} s, {} nodes, {} leaves, SAH cost {:.4}",
+        "{} boxes, {} references, {} threads: {seconds:.4} s, {} nodes, {} leaves, SAH cost {:.4}",
         boxes.len(),
+        references,
         args.threads,
         bvh.node_count(),
         bvh.leaf_count(),

@@ -75,7 +75,7 @@ pub use render::{
     LightSampling, Rect, Render, RenderSettings, RenderStats, Renderer, render, render_reference,
 };
 pub use sampling::DefaultRng;
-pub use scene::{Acceleration, DynScene, EnumScene, Layout, MaterialId, Object, Scene};
+pub use scene::{Acceleration, BvhQuality, DynScene, EnumScene, Layout, MaterialId, Object, Scene};
 pub use shape::{Hit, Hittable, Intersection, Mesh, Plane, ShapeKind, Sphere, Surface, Triangle};
 pub use vec3::{Color, Vec3};
 

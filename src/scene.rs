@@ -66,6 +66,7 @@ pub struct Scene<F, S, M> {
     background: Background<F>,
     background_sampled: bool,
     acceleration: Acceleration,
+    bvh_quality: BvhQuality,
     index: OnceLock<Index<F>>,
     emitters: OnceLock<Emitters>,
     _scalar: PhantomData<F>,
@@ -93,6 +94,19 @@ impl Acceleration {
     pub const AUTO_THRESHOLD: usize = 16;
 }
 
+/// How much work a scene's BVH build does for a faster trace (the names are Embree's).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BvhQuality {
+    /// The binned surface-area-heuristic build over whole primitives.
+    #[default]
+    Medium,
+    /// The same build after spatial splits: long and diagonal triangles, whose boxes are
+    /// mostly empty, are cut into pieces first ([`Bvh::build_split`](crate::bvh::Bvh::build_split)).
+    /// Triangles only; it takes longer to build and more memory, and pays off where large
+    /// triangles overlap (architecture, a room), little on a finely tessellated model.
+    High,
+}
+
 /// The fast path: shapes and materials are enums, stored inline.
 pub type EnumScene<F> = Scene<F, ShapeKind<F>, MaterialKind<F>>;
 
@@ -109,6 +123,7 @@ impl<F: Float> EnumScene<F> {
         let mut scene = DynScene::new(self.background.clone());
         scene.set_background_sampled(self.background_sampled);
         scene.set_acceleration(self.acceleration);
+        scene.set_bvh_quality(self.bvh_quality);
         for m in &self.materials {
             let material: SharedMaterial<F> = match m {
                 MaterialKind::Mirror(m) => Arc::new(*m).into(),
@@ -154,6 +169,7 @@ impl<F: Float, S, M> Scene<F, S, M> {
             background,
             background_sampled: false,
             acceleration: Acceleration::Auto,
+            bvh_quality: BvhQuality::Medium,
             index: OnceLock::new(),
             emitters: OnceLock::new(),
             _scalar: PhantomData,
@@ -168,6 +184,18 @@ impl<F: Float, S, M> Scene<F, S, M> {
     /// Chooses how the scene is intersected (the default is [`Acceleration::Auto`]).
     pub fn set_acceleration(&mut self, acceleration: Acceleration) -> &mut Self {
         self.acceleration = acceleration;
+        self.index = OnceLock::new();
+        self
+    }
+
+    /// How much work the scene's BVH build does.
+    pub fn bvh_quality(&self) -> BvhQuality {
+        self.bvh_quality
+    }
+
+    /// Chooses how much work the BVH build does (the default is [`BvhQuality::Medium`]).
+    pub fn set_bvh_quality(&mut self, quality: BvhQuality) -> &mut Self {
+        self.bvh_quality = quality;
         self.index = OnceLock::new();
         self
     }
@@ -270,10 +298,17 @@ impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
         self.index().uses_bvh()
     }
 
+    /// How many references the scene's BVH sorts into its leaves (building it if it is
+    /// due): one for each part in the tree, and more where the high-quality build cut
+    /// triangles into pieces ([`BvhQuality::High`]); `None` without a BVH.
+    pub fn bvh_references(&self) -> Option<usize> {
+        self.index().bvh_references()
+    }
+
     #[inline]
     fn index(&self) -> &Index<F> {
         self.index
-            .get_or_init(|| Index::build(&self.objects, self.acceleration))
+            .get_or_init(|| Index::build(&self.objects, self.acceleration, self.bvh_quality))
     }
 
     /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.
@@ -325,7 +360,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Scene<F, S, M> {
 }
 
 impl<F: Float> EnumScene<F> {
-    /// The same scene in scalar `G` (objects, lights, background, acceleration): build a
+    /// The same scene in scalar `G` (objects, lights, background, acceleration, BVH quality): build a
     /// scene once (in `f64`, say) and render it in `f32`, `f64` or double-double.
     ///
     /// Every value is rounded through `f64` and re-validated by its constructor, so a value
@@ -336,6 +371,7 @@ impl<F: Float> EnumScene<F> {
         let mut out = EnumScene::new(self.background.cast()?);
         out.set_background_sampled(self.background_sampled);
         out.set_acceleration(self.acceleration);
+        out.set_bvh_quality(self.bvh_quality);
         for m in &self.materials {
             out.add_material(m.cast()?);
         }

@@ -17,7 +17,7 @@ mod report;
 use clap::Parser;
 use geometry::Geometry;
 use raytrace::prelude::*;
-use raytrace::{EnumScene, RenderStats};
+use raytrace::{BvhQuality, EnumScene, RenderStats};
 use report::Measurement;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -27,8 +27,8 @@ use std::time::Instant;
 #[derive(Parser, Debug)]
 #[command(name = "scale", bin_name = "cargo run --release --example scale --")]
 struct Args {
-    /// `spheres:N` (N random small spheres) or `dragon:res4|res3|res2|full` (11k, 48k,
-    /// 203k or 871k triangles)
+    /// `spheres:N` (N random small spheres), `needles:N` (N random long thin triangles) or
+    /// `dragon:res4|res3|res2|full` (11k, 48k, 203k or 871k triangles)
     #[arg(long, value_name = "SCENE", value_parser = SceneChoice::parse)]
     scene: SceneChoice,
     /// Worker threads for the render
@@ -49,6 +49,9 @@ struct Args {
     /// Scalar of the render: f32 (as Embree) or f64
     #[arg(long, default_value = "f32", value_parser = ["f32", "f64"])]
     precision: String,
+    /// BVH build quality: medium (binned SAH) or high (with spatial splits), Embree's names
+    #[arg(long, default_value = "medium", value_parser = ["medium", "high"])]
+    bvh_quality: String,
     /// Folder of the dragon meshes (`tools/fetch_meshes.sh` fetches them)
     #[arg(long, value_name = "DIR", default_value = "assets/meshes")]
     assets: PathBuf,
@@ -74,6 +77,8 @@ enum SceneChoice {
     Spheres(usize),
     /// The dragon at a resolution: `res4`, `res3`, `res2` or `full`.
     Dragon(String),
+    /// This many long thin triangles, every way oriented.
+    Needles(usize),
 }
 
 impl SceneChoice {
@@ -83,9 +88,13 @@ impl SceneChoice {
                 Ok(n) if n >= 1 => Ok(Self::Spheres(n)),
                 _ => Err(format!("expected spheres:N with N ≥ 1, got {s:?}")),
             },
+            Some(("needles", n)) => match n.parse::<usize>() {
+                Ok(n) if n >= 1 => Ok(Self::Needles(n)),
+                _ => Err(format!("expected needles:N with N ≥ 1, got {s:?}")),
+            },
             Some(("dragon", res @ ("res4" | "res3" | "res2" | "full"))) => Ok(Self::Dragon(res.into())),
             _ => Err(format!(
-                "expected spheres:N or dragon:res4|res3|res2|full, got {s:?}"
+                "expected spheres:N, needles:N or dragon:res4|res3|res2|full, got {s:?}"
             )),
         }
     }
@@ -94,12 +103,14 @@ impl SceneChoice {
         match self {
             Self::Spheres(n) => format!("spheres:{n}"),
             Self::Dragon(res) => format!("dragon:{res}"),
+            Self::Needles(n) => format!("needles:{n}"),
         }
     }
 
     fn geometry(&self, assets: &Path) -> raytrace::Result<Geometry> {
         match self {
             Self::Spheres(n) => Ok(Geometry::spheres(*n, SPHERE_SEED)),
+            Self::Needles(n) => Ok(Geometry::needles(*n, SPHERE_SEED)),
             Self::Dragon(res) => {
                 let file = match res.as_str() {
                     "full" => "dragon_vrip.ply".to_string(),
@@ -146,7 +157,10 @@ fn run(args: &Args) -> raytrace::Result<()> {
     let measurement = Measurement {
         scene: args.scene.name(),
         primitives: geometry.primitives(),
-        program: format!("raytrace-{}", args.precision),
+        program: match args.bvh_quality.as_str() {
+            "high" => format!("raytrace-{}-high", args.precision),
+            _ => format!("raytrace-{}", args.precision),
+        },
         threads: stats.threads,
         build_s,
         render_s: stats.elapsed.as_secs_f64(),
@@ -160,7 +174,10 @@ fn run(args: &Args) -> raytrace::Result<()> {
 /// Builds the scene in `F` and its BVH (timed alone: the scene builds it lazily on the first
 /// query, so `uses_bvh` forces it before the render starts), then renders it.
 fn measure<F: Float>(args: &Args, geometry: &Geometry) -> raytrace::Result<(f64, RenderStats)> {
-    let scene: EnumScene<F> = geometry.scene()?;
+    let mut scene: EnumScene<F> = geometry.scene()?;
+    if args.bvh_quality == "high" {
+        scene.set_bvh_quality(BvhQuality::High);
+    }
     let start = Instant::now();
     let bvh = scene.uses_bvh();
     let build_s = start.elapsed().as_secs_f64();

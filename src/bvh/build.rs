@@ -7,6 +7,7 @@
 //! `rayon::join`, each into its own arrays, which are concatenated afterwards in the
 //! order the sequential build writes them.
 
+mod presplit;
 mod split;
 
 use super::Node;
@@ -25,8 +26,16 @@ pub(super) type Arrays<F> = (Vec<Node<F>>, Vec<u32>, Vec<(u32, u32)>);
 
 /// The binary tree over the primitives that `prims` yields as `(box, class)`, numbered in
 /// that order (empty for none); no leaf holds two classes, and the leaves are numbered class
-/// by class (see [`group_by_class`]).
-pub(super) fn build<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) -> Arrays<F> {
+/// by class (see [`group_by_class`]). With `triangle`, the triangles it names
+/// (`triangle(i)` gives primitive `i`'s vertices) are first cut into pieces
+/// ([`presplit::presplit`]), so a triangle may sit in more than one leaf.
+pub(super) fn build<F: Float, T>(
+    prims: impl IntoIterator<Item = (Aabb<F>, u8)>,
+    triangle: Option<T>,
+) -> Arrays<F>
+where
+    T: Fn(u32) -> Option<[Vec3<F>; 3]>,
+{
     let mut items: Vec<Item<F>> = prims
         .into_iter()
         .enumerate()
@@ -36,6 +45,9 @@ pub(super) fn build<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) ->
             class,
         })
         .collect();
+    if let Some(triangle) = triangle {
+        items = presplit::presplit(items, triangle);
+    }
     if items.is_empty() {
         return (Vec::new(), Vec::new(), Vec::new());
     }
@@ -77,7 +89,9 @@ fn group_by_class<F: Float>(nodes: &mut [Node<F>], leaves: &mut Vec<(u32, u32)>,
 }
 
 /// What the build reads of a primitive, copied once into one compact array (32 bytes in
-/// f32: the centroid is recomputed, not stored, which saves more memory than time).
+/// f32: the centroid is recomputed, not stored, which saves more memory than time); a
+/// piece of a cut triangle is an item of its own, with the triangle's index.
+#[derive(Clone, Copy)]
 struct Item<F> {
     bounds: Aabb<F>,
     index: u32,

@@ -13,7 +13,7 @@
 mod packet;
 
 use super::layout::{Layout, Primitive};
-use super::{Acceleration, Object, plain};
+use super::{Acceleration, BvhQuality, Object, plain};
 use crate::aabb::Aabb;
 use crate::bvh::{Bvh, Streams};
 use crate::float::Float;
@@ -49,8 +49,12 @@ pub(super) struct Index<F> {
 }
 
 impl<F: Float> Index<F> {
-    /// Packs the parts of `objects` for `acceleration`.
-    pub(super) fn build<S: Layout<F>, M>(objects: &[Object<S, M>], acceleration: Acceleration) -> Self {
+    /// Packs the parts of `objects` for `acceleration`, a BVH built at `quality`.
+    pub(super) fn build<S: Layout<F>, M>(
+        objects: &[Object<S, M>],
+        acceleration: Acceleration,
+        quality: BvhQuality,
+    ) -> Self {
         let keys = || {
             let parts =
                 |(o, object): (usize, &Object<S, M>)| (0..object.shape.parts()).map(move |p| (o as u32, p));
@@ -92,13 +96,25 @@ impl<F: Float> Index<F> {
         }
         let tree_keys: Vec<Key> = keys().filter(in_tree).collect();
         let class = |k: &Key| kind(&shape(k).primitive(k.1));
-        let bvh = Bvh::build_classes(tree_keys.iter().map(|k| (bounds(k).unwrap_or(whole), class(k))));
+        let prims = tree_keys.iter().map(|k| (bounds(k).unwrap_or(whole), class(k)));
+        let bvh = match quality {
+            BvhQuality::Medium => Bvh::build_classes(prims),
+            BvhQuality::High => Bvh::build_split(prims, |i| {
+                let k = &tree_keys[i as usize];
+                match shape(k).primitive(k.1) {
+                    Primitive::Triangle(t) => Some(t),
+                    _ => None,
+                }
+            }),
+        };
         let kinds = (0..bvh.leaf_count()).map(|k| class(&tree_keys[bvh.leaf(k)[0] as usize]));
         index.leaves.reserve_leaves(kinds);
         let mut leaf_keys = Vec::new();
         for k in 0..bvh.leaf_count() {
             leaf_keys.clear();
             leaf_keys.extend(bvh.leaf(k).iter().map(|&i| tree_keys[i as usize]));
+            // Pieces of one cut triangle may share a leaf: it is tested once.
+            dedup(&mut leaf_keys);
             packer.pack(&mut leaf_keys, objects, &mut index.leaves);
             debug_assert_eq!(index.leaves.len(), k + 1, "a leaf is one packet");
         }
@@ -109,6 +125,12 @@ impl<F: Float> Index<F> {
     /// Whether a BVH is used.
     pub(super) fn uses_bvh(&self) -> bool {
         self.bvh.is_some()
+    }
+
+    /// The references in the BVH's leaves, a cut triangle's pieces counted apart.
+    pub(super) fn bvh_references(&self) -> Option<usize> {
+        let bvh = self.bvh.as_ref()?;
+        Some((0..bvh.leaf_count()).map(|k| bvh.leaf(k).len()).sum())
     }
 
     /// The nearest hit in `(0, t_max)` and the object hit; at equal distance, the part
@@ -248,6 +270,18 @@ fn record<F: Float, S: Layout<F>, M: Material<F>>(
 #[inline(never)]
 fn coordinates<F: Float, S: Layout<F>>(shape: &S, ray: &Ray<F>, hit: &Intersection<F>) -> Coordinates<F> {
     shape.coordinates(ray, hit, &shape.finish(ray, hit))
+}
+
+/// `keys` with each key only at its first place (a leaf's at most four: no sort needed).
+fn dedup(keys: &mut Vec<Key>) {
+    let mut kept = 0;
+    for i in 0..keys.len() {
+        if !keys[..kept].contains(&keys[i]) {
+            keys[kept] = keys[i];
+            kept += 1;
+        }
+    }
+    keys.truncate(kept);
 }
 
 #[cfg(test)]

@@ -66,6 +66,7 @@ pub(super) fn build<F: Float>(file: &SceneFile) -> Result<Built<F>> {
     )?;
     let mut scene = EnumScene::new(background);
     scene.set_acceleration(r.acceleration);
+    scene.set_bvh_quality(r.bvh_quality);
     scene.set_background_sampled(match &file.background {
         BackgroundSpec::Sky { light, .. } | BackgroundSpec::Solid { light, .. } => *light,
         BackgroundSpec::Envmap { .. } => true,

@@ -9,7 +9,7 @@ use super::bsdf::{
 };
 use super::texture_spec::{ScalarRef, TextureRef};
 use crate::image::ToneCurve;
-use crate::scene::Acceleration;
+use crate::scene::{Acceleration, BvhQuality};
 use serde::{Deserialize, Serialize};
 
 /// A point, a direction or a colour: `[x, y, z]` or `[r, g, b]`.
@@ -34,6 +34,9 @@ pub struct RenderOptions {
     /// How the scene is intersected.
     #[serde(with = "AccelerationName")]
     pub acceleration: Acceleration,
+    /// How much work the BVH build does: `"high"` adds spatial splits.
+    #[serde(with = "BvhQualityName", default, skip_serializing_if = "is_medium")]
+    pub bvh_quality: BvhQuality,
     /// Stops of exposure for the display formats (PNG, PPM): `+1` doubles every value
     /// before the tone curve.
     #[serde(default, skip_serializing_if = "is_zero")]
@@ -41,6 +44,10 @@ pub struct RenderOptions {
     /// The tone curve for the display formats.
     #[serde(with = "ToneCurveName", default, skip_serializing_if = "is_no_curve")]
     pub tonemap: ToneCurve,
+}
+
+fn is_medium(q: &BvhQuality) -> bool {
+    *q == BvhQuality::Medium
 }
 
 fn is_no_curve(c: &ToneCurve) -> bool {
@@ -58,6 +65,7 @@ impl Default for RenderOptions {
             seed: 0,
             precision: FilePrecision::F64,
             acceleration: Acceleration::Auto,
+            bvh_quality: BvhQuality::Medium,
             exposure: 0.0,
             tonemap: ToneCurve::None,
         }
@@ -93,6 +101,14 @@ enum AccelerationName {
     #[serde(alias = "list")]
     Linear,
     Bvh,
+}
+
+/// The library's [`BvhQuality`] under the names the file uses.
+#[derive(Serialize, Deserialize)]
+#[serde(remote = "BvhQuality", rename_all = "lowercase")]
+enum BvhQualityName {
+    Medium,
+    High,
 }
 
 /// The `[camera]` section.

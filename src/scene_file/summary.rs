@@ -35,6 +35,9 @@ pub struct Summary {
     pub bounds: Option<Aabb<f64>>,
     /// Whether the scene intersects through a BVH.
     pub uses_bvh: bool,
+    /// The references the BVH sorts, if there is one: more than its parts where spatial
+    /// splits (`bvh_quality = "high"`) cut triangles into pieces.
+    pub bvh_references: Option<usize>,
     /// What was read but has no effect, each naming its file and line: the keys and image
     /// options of an OBJ file's `.mtl` materials that are not read or that their mapping
     /// leaves unused, and a height map given as `map_Bump`.
@@ -72,4 +75,5 @@ pub(super) fn count<F: Float>(scene: &EnumScene<F>, summary: &mut Summary) {
     summary.sampled_emitters = scene.emitters().len();
     summary.bounds = bounds;
     summary.uses_bvh = scene.uses_bvh();
+    summary.bvh_references = scene.bvh_references();
 }

@@ -71,6 +71,7 @@ mod render_core;
 mod scene_file_errors;
 mod scene_files;
 mod self_intersection;
+mod spatial_splits;
 mod sphere_stability;
 mod sun_and_spot;
 mod textures;

@@ -131,6 +131,12 @@ fn every_section_names_the_field_of_a_wrong_type_at_its_value() {
         message.starts_with("objects[0].type: unknown variant `cube`"),
         "{message}"
     );
+    let (location, message) = wrong("[render]\nwidth = 8\nbvh_quality = \"ultra\"\n");
+    assert_eq!(location, "line 3, column 15");
+    assert!(
+        message.starts_with("render.bvh_quality: unknown variant `ultra`, expected `medium` or `high`"),
+        "{message}"
+    );
     let (location, message) =
         wrong("[materials.glass]\ntype = \"dielectric\"\nindex = 1.5\nfresnel = \"approx\"\n");
     assert_eq!(location, "line 4, column 11");

@@ -12,7 +12,7 @@ use raytrace::scene_file::{
     BackgroundSpec, CameraSpec, FilePrecision, FresnelSpec, LightSpec, MaterialSpec, ObjectSpec,
     RenderOptions, Scale, SceneFile,
 };
-use raytrace::{Acceleration, Image};
+use raytrace::{Acceleration, BvhQuality, Image};
 use std::path::{Path, PathBuf};
 
 const WIDTH: usize = 48;
@@ -123,6 +123,41 @@ fn summaries_count_what_the_files_hold() {
     assert!(many.summary.uses_bvh && many.summary.spheres > 400);
 }
 
+/// `bvh_quality = "high"` reaches the scene: its spatial splits cut the long triangles among
+/// small ones (the references exceed the parts), where `"medium"` (the default) cuts none.
+#[test]
+fn the_bvh_quality_reaches_the_scene() {
+    let mut objects = String::new();
+    for i in 0..60 {
+        let (x, y) = ((i % 8) as f64 - 4.0, (i / 8) as f64 - 4.0);
+        let (a, b, c) = if i % 10 == 0 {
+            (
+                [x - 3.0, y - 3.0, -9.0],
+                [x + 3.0, y + 3.0, -3.0],
+                [x, y + 0.1, -6.0],
+            )
+        } else {
+            ([x, y, -6.0], [x + 0.3, y, -6.0], [x, y + 0.3, -6.2])
+        };
+        objects +=
+            &format!("[[objects]]\ntype = \"triangle\"\na = {a:?}\nb = {b:?}\nc = {c:?}\nmaterial = \"m\"\n");
+    }
+    let built = |quality: &str| {
+        let text = format!(
+            "[render]\nwidth = 8\nbvh_quality = \"{quality}\"\n[materials.m]\ntype = \"lambertian\"\nalbedo = [0.5, 0.5, 0.5]\n{objects}"
+        );
+        let built = SceneFile::parse(&text, Path::new("splits.toml"))
+            .unwrap()
+            .build::<f32>()
+            .unwrap();
+        assert_eq!(format!("{:?}", built.scene.bvh_quality()).to_lowercase(), quality);
+        built.summary.bvh_references.unwrap()
+    };
+    assert_eq!(built("medium"), 60);
+    let high = built("high");
+    assert!(high > 70, "the six long triangles cut: {high} references");
+}
+
 const GOOD: &str = include_str!("../../scenes/four_mirrors.toml");
 
 fn triple(range: std::ops::Range<f64>) -> impl Strategy<Value = [f64; 3]> {
@@ -147,15 +182,21 @@ fn any_file() -> impl Strategy<Value = SceneFile> {
         0..3u8,
         prop_oneof![Just(0.0), finite()],
         any::<bool>(),
+        any::<bool>(),
     )
         .prop_map(
-            |(width, spp, max_depth, seed, p, a, exposure, aces)| RenderOptions {
+            |(width, spp, max_depth, seed, p, a, exposure, aces, high)| RenderOptions {
                 width,
                 spp,
                 max_depth,
                 seed,
                 precision: [FilePrecision::F32, FilePrecision::F64, FilePrecision::Auto][p as usize],
                 acceleration: [Acceleration::Auto, Acceleration::Linear, Acceleration::Bvh][a as usize],
+                bvh_quality: if high {
+                    BvhQuality::High
+                } else {
+                    BvhQuality::Medium
+                },
                 exposure,
                 tonemap: if aces { ToneCurve::Aces } else { ToneCurve::None },
             },

@@ -82,14 +82,16 @@ pub fn check(path: &Path, defines: &[(String, String)]) -> Result<()> {
         ),
         None => println!("  bounds: no bounded objects"),
     }
-    println!(
-        "  acceleration: {}",
-        if s.uses_bvh {
-            "BVH"
-        } else {
-            "a loop over the objects"
+    match s.bvh_references {
+        Some(n) => {
+            let quality = match r.bvh_quality {
+                raytrace::BvhQuality::Medium => "medium",
+                raytrace::BvhQuality::High => "high, with spatial splits",
+            };
+            println!("  acceleration: BVH of {n} references ({quality})");
         }
-    );
+        None => println!("  acceleration: a loop over the objects"),
+    }
     let image = (built.camera.width(), built.camera.height());
     println!(
         "  render: {}×{} pixels, {} spp, max depth {}, seed {}",

@@ -33,7 +33,7 @@ fn objects(n: usize, others: bool) -> Vec<Object<ShapeKind<f32>, ()>> {
 fn a_leaf_is_one_packet_of_one_kind() {
     for others in [false, true] {
         let objects = objects(40, others);
-        let index = Index::build(&objects, Acceleration::Bvh);
+        let index = Index::build(&objects, Acceleration::Bvh, BvhQuality::Medium);
         let bvh = index.bvh.as_ref().unwrap();
         assert_eq!(index.leaves.len(), bvh.leaf_count());
         for k in 0..bvh.leaf_count() {
@@ -146,7 +146,7 @@ fn a_batch_answers_like_single_rays() {
     ] {
         let objects = mixed(seed, triangles);
         let tags = tags(&objects);
-        let index = Index::build(&objects, acceleration);
+        let index = Index::build(&objects, acceleration, BvhQuality::Medium);
         let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed + 10);
         let mut v = |s: f64| {
             Vec3::new(
@@ -209,7 +209,7 @@ fn the_index_is_the_naive_loop() {
     for (seed, acceleration) in [(5, Acceleration::Linear), (6, Acceleration::Bvh)] {
         let objects = mixed(seed, true);
         let tags = tags(&objects);
-        let index = Index::build(&objects, acceleration);
+        let index = Index::build(&objects, acceleration, BvhQuality::Medium);
         let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed);
         let mut v = |s: f64| {
             Vec3::new(
@@ -266,8 +266,8 @@ fn the_plain_loop_is_the_packed_loop() {
     let tags = tags(&objects);
     let parts: u32 = objects.iter().map(|o| o.shape.parts()).sum();
     assert!(parts < Acceleration::AUTO_THRESHOLD as u32, "{parts} parts");
-    let plain = Index::build(&objects, Acceleration::Linear);
-    let packed = Index::build(&objects, Acceleration::Auto);
+    let plain = Index::build(&objects, Acceleration::Linear, BvhQuality::Medium);
+    let packed = Index::build(&objects, Acceleration::Auto, BvhQuality::Medium);
     assert!(plain.plain && !packed.plain && packed.bvh.is_none());
     let mut rng = crate::sampling::DefaultRng::seed_from_u64(7);
     let mut v = |s: f64| {
@@ -305,4 +305,92 @@ fn the_plain_loop_is_the_packed_loop() {
         }
     }
     assert!(hits > 2000, "most rays should hit something ({hits})");
+}
+
+/// Long thin triangles every way oriented, alone and in a mesh, with spheres among them:
+/// the high-quality build cuts most of the triangles into pieces ([`BvhQuality::High`]),
+/// and still answers as the naive loop, for the nearest hit, in batches and for occlusion.
+#[test]
+fn cut_triangles_answer_as_the_naive_loop() {
+    use rand::{RngExt, SeedableRng};
+    let mut rng = crate::sampling::DefaultRng::seed_from_u64(12);
+    let mut v = |s: f64| {
+        Vec3::new(
+            rng.random_range(-s..s),
+            rng.random_range(-s..s),
+            rng.random_range(-s..s),
+        )
+    };
+    let (mut shapes, mut vertices): (Vec<ShapeKind<f64>>, Vec<Vec3<f64>>) = (Vec::new(), Vec::new());
+    let mut targets = Vec::new();
+    for i in 0..300 {
+        // Mostly small triangles, every twentieth a needle: the needles are cut until their
+        // pieces' boxes are full enough, within the budget.
+        let c = v(5.0);
+        let corners = if i % 20 == 0 {
+            let d = v(1.0);
+            [c - d, c + d, c + v(0.05)]
+        } else {
+            [c + v(0.3), c + v(0.3), c + v(0.3)]
+        };
+        targets.push(corners);
+        match i % 3 {
+            0 => shapes.push(Triangle::new(corners[0], corners[1], corners[2]).unwrap().into()),
+            1 => vertices.extend(corners),
+            _ => shapes.push(Sphere::new(c, 0.1).unwrap().into()),
+        }
+    }
+    let faces = (0..vertices.len() as u32 / 3)
+        .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+        .collect();
+    shapes.push(Mesh::new(vertices, faces).unwrap().into());
+    let objects: Vec<Object<ShapeKind<f64>>> = shapes
+        .into_iter()
+        .enumerate()
+        .map(|(i, shape)| Object {
+            shape,
+            material: MaterialId(i as u32),
+        })
+        .collect();
+    let tags = tags(&objects);
+    let index = Index::build(&objects, Acceleration::Bvh, BvhQuality::High);
+    let bvh = index.bvh.as_ref().expect("a BVH");
+    let references: usize = (0..bvh.leaf_count()).map(|k| bvh.leaf(k).len()).sum();
+    assert!(
+        (310..500).contains(&references),
+        "the needles cut, within the budget: {references} references"
+    );
+    let mut rays = Vec::new();
+    let mut hits = 0;
+    // Each ray aimed at a random point of a random triangle (a sphere's centre for every
+    // third), so that every piece of every triangle is probed.
+    for i in 0..20000 {
+        let [a, b, c] = targets[i % targets.len()];
+        let (s, t) = (v(1.0).x.abs(), v(1.0).y.abs());
+        let (s, t) = if s + t > 1.0 { (1.0 - s, 1.0 - t) } else { (s, t) };
+        let Some(ray) = Ray::towards(v(9.0), a + (b - a) * s + (c - a) * t) else {
+            continue;
+        };
+        let want = naive_loop(&objects, &ray);
+        let got = index
+            .hit(&objects, &tags, &ray, f64::INFINITY)
+            .map(|(h, o, _)| (h, o.material));
+        assert_eq!(got, want, "{ray:?}");
+        hits += usize::from(want.is_some());
+        for t_max in [1.0, 5.0, 12.0] {
+            let blocked = objects.iter().any(|o| o.shape.occluded(&ray, t_max));
+            assert_eq!(
+                index.occluded(&objects, &ray, t_max),
+                blocked,
+                "{ray:?} to {t_max}"
+            );
+        }
+        rays.push(ray);
+    }
+    assert!(hits > 15000, "most rays should hit something ({hits})");
+    let mut near = Nearests::default();
+    index.hit_all(&objects, &tags, &rays, &mut near, |i, hit| {
+        let want = naive_loop(&objects, &rays[i]);
+        assert_eq!(hit.map(|(h, o, _)| (h, o.material)), want, "{:?}", rays[i]);
+    });
 }
