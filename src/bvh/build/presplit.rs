@@ -105,9 +105,18 @@ pub(super) fn presplit<F: Float>(
             bounds,
         })
     };
+    // A whole triangle is its own piece: its box, no clipping.
     let mut heap: BinaryHeap<Piece> = (0..items.len() as u32)
-        .filter_map(|at| tri(at).and_then(|t| piece(at, &t, &widen(&items[at as usize].bounds))))
-        .filter(|p| p.excess > threshold)
+        .filter_map(|at| {
+            let bounds = widen(&items[at as usize].bounds);
+            let excess = bounds.surface_area() - ideal(&tri(at)?);
+            (excess > threshold).then_some(Piece {
+                excess,
+                at,
+                seq: 0,
+                bounds,
+            })
+        })
         .collect();
     let mut done = Vec::new();
     for _ in 0..budget {
