@@ -260,6 +260,33 @@ fn a_bad_exposure_is_a_usage_error_naming_the_option() {
     );
 }
 
+/// `--bvh-quality high` reaches the scene: the render's bytes are the medium build's (the
+/// spatial splits change the tree, never the image), and an unknown quality is a usage error.
+#[test]
+fn the_bvh_quality_option_renders_the_same_bytes() {
+    let s = scene("cornell_box.toml");
+    let dir = folder("bvh-quality");
+    let render = |quality: &str| {
+        let out = dir.join(format!("{quality}.png"));
+        let args = [
+            "render",
+            s.to_str().unwrap(),
+            "--width",
+            "24",
+            "--spp",
+            "2",
+            "--quiet",
+        ];
+        let quality = ["--bvh-quality", quality, "--out", out.to_str().unwrap()];
+        expect(&run(&[&args[..], &quality[..]].concat()), 0, &[]);
+        fs::read(out).unwrap()
+    };
+    assert_eq!(render("medium"), render("high"));
+    let bad = ["render", s.to_str().unwrap(), "--bvh-quality", "ultra"];
+    expect(&run(&bad), 2, &["--bvh-quality", "ultra"]);
+    fs::remove_dir_all(dir).unwrap();
+}
+
 #[test]
 fn check_and_advise_describe_the_scene() {
     let s = scene("plane_and_triangles.toml");

@@ -89,6 +89,10 @@ pub struct RenderArgs {
     /// The scalar the render runs in; auto measures it first [default: the scene's]
     #[arg(long, value_name = "P")]
     pub precision: Option<PrecisionArg>,
+    /// The BVH build: high adds spatial splits (long triangles cut into pieces) [default:
+    /// the scene's]
+    #[arg(long, value_name = "Q")]
+    pub bvh_quality: Option<QualityArg>,
     /// Worker threads, 1 to 256 [default: all cores]
     #[arg(long, value_name = "T", value_parser = parse_threads)]
     pub threads: Option<usize>,
@@ -152,6 +156,15 @@ pub enum PrecisionArg {
     F64,
     /// Measured on a small render first (`raytrace advise`).
     Auto,
+}
+
+/// `--bvh-quality`, Embree's names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum QualityArg {
+    /// The binned SAH build over whole primitives.
+    Medium,
+    /// The same after spatial splits.
+    High,
 }
 
 /// The image formats.

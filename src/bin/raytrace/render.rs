@@ -1,7 +1,7 @@
 //! `raytrace render`: a scene file, the command line's overrides, one image or tile.
 
 use crate::Failure;
-use crate::args::{PrecisionArg, RenderArgs};
+use crate::args::{PrecisionArg, QualityArg, RenderArgs};
 use crate::names;
 use crate::output::{self, Target};
 use raytrace::advice::Precision;
@@ -124,6 +124,12 @@ fn override_settings(file: &mut SceneFile, args: &RenderArgs) -> Result<(), Fail
     }
     if let Some(t) = args.tonemap {
         r.tonemap = t.curve();
+    }
+    if let Some(q) = args.bvh_quality {
+        r.bvh_quality = match q {
+            QualityArg::Medium => raytrace::BvhQuality::Medium,
+            QualityArg::High => raytrace::BvhQuality::High,
+        };
     }
     if let Some(p) = args.precision {
         r.precision = match p {
