@@ -290,9 +290,11 @@ check_data() {
     # Is the commit a result was made at older than the last change to the code it depicts?
     git rev-parse --git-dir >/dev/null 2>&1 || return 0
     # The last commit that changed the code under the given paths beyond comments (// or # )
-    # and blank lines: a commit that only rewords comments leaves every result as it was.
+    # and blank lines: a commit that only rewords comments leaves every result as it was. Test
+    # files (`tests.rs`, `tests/`) are not the code a result depicts.
     last_code() {
         local c
+        set -- "$@" ':(exclude,glob)**/tests.rs' ':(exclude,glob)**/tests/**'
         for c in $(git log --format=%h -- "$@" 2>/dev/null); do
             if git show --format= --unified=0 "$c" -- "$@" | grep -E '^[+-]' | grep -vE '^(\+\+\+|---) ' |
                 grep -qvE '^[+-][[:space:]]*(//.*|#( .*)?)?$'; then
