@@ -81,9 +81,10 @@ impl<F: Float> Bvh<F> {
     /// [`Bvh::build_classes`] with spatial splits, the quality Embree calls high: each
     /// triangle `triangle(i)` names (primitive `i`'s vertices, `None` for a primitive that
     /// is not one) whose box is mostly empty may be cut by planes into pieces, so that the
-    /// tree's boxes hold parts of it rather than all of it (pre-splitting, Karras & Aila
-    /// 2013). A cut triangle sits in more than one leaf, and a leaf may name it twice.
-    /// It takes up to 30 % more references than there are triangles, and longer to build.
+    /// tree's boxes hold parts of it rather than all of it (pre-splitting after Karras &
+    /// Aila 2013; how much is cut is in `build/presplit.rs`). A cut triangle sits in more
+    /// than one leaf, and a leaf may name it twice. It takes at most three references a
+    /// triangle (a well-tessellated model takes almost none more) and longer to build.
     ///
     /// # Panics
     /// With more than `u32::MAX` primitives or pieces.
