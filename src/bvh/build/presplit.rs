@@ -7,8 +7,8 @@
 //! After Karras & Aila 2013 ("Fast Parallel Construction of High-Quality Bounding Volume
 //! Hierarchies", §4): their grid, planes at `min + extent·m/2^l` over the scene's box, and a
 //! piece always cut at the coarsest plane crossing it (where the build is likeliest to split).
-//! Not their fixed share of cuts (`0.3·N`, handed out by priority): on the dragon that cut
-//! well-shaped triangles to no gain and slowed the trace by 4–6 %. Here a piece is worth
+//! Not their fixed share of cuts (`0.3·N`, handed out by priority), which cuts well-shaped
+//! triangles too, to no gain (`docs/PERFORMANCE.md`, "Spatial splits"). Here a piece is worth
 //! cutting by how much of its box is empty, its *excess* `A_box − A_ideal` (`A_ideal` is the
 //! area its boxes would have if it were cut into infinitely many pieces), and only while that
 //! is large against the triangles' own size (the median `A_ideal`); the pieces are cut
@@ -25,8 +25,9 @@ use std::collections::BinaryHeap;
 /// for scenes that would take cuts without end (long needles every way), not reached by
 /// most (figures in `docs/PERFORMANCE.md`).
 const BUDGET: f64 = 2.0;
-/// A piece is cut while its excess is above this many times the median triangle's `A_ideal`.
-/// At 4 the full dragon took 30 % more references and traced slower; at 16 it takes 0.6 %.
+/// A piece is cut while its excess is above this many times the median triangle's `A_ideal`:
+/// high enough that a scanned model's ordinary triangles are left whole (the values tried are
+/// in `docs/PERFORMANCE.md`).
 const WORTH: f64 = 16.0;
 /// The finest grid level cut at: planes `2^−24` of the scene apart.
 const LEVELS: u32 = 24;

@@ -201,6 +201,26 @@ fn naive_loop<S: Hittable<f64>, M: Copy>(objects: &[Object<S, M>], ray: &Ray<f64
     best
 }
 
+/// Asserts that `index` answers `ray` as the naive loop does, for the nearest hit and for
+/// occlusion up to three distances; returns whether the ray hits something.
+fn answers_as_the_naive_loop(
+    index: &Index<f64>,
+    objects: &[Object<ShapeKind<f64>>],
+    tags: &[Tag],
+    ray: &Ray<f64>,
+) -> bool {
+    let want = naive_loop(objects, ray);
+    let got = index
+        .hit(objects, tags, ray, f64::INFINITY)
+        .map(|(h, o, _)| (h, o.material));
+    assert_eq!(got, want, "{ray:?}");
+    for t_max in [1.0, 5.0, 12.0] {
+        let blocked = objects.iter().any(|o| o.shape.occluded(ray, t_max));
+        assert_eq!(index.occluded(objects, ray, t_max), blocked, "{ray:?} to {t_max}");
+    }
+    want.is_some()
+}
+
 /// The index, through the loop and through a BVH, answers as the naive loop over the
 /// objects does, ties and meshes included, and so does the occlusion query.
 #[test]
@@ -223,20 +243,7 @@ fn the_index_is_the_naive_loop() {
             let Some(ray) = Ray::towards(v(9.0), v(5.0)) else {
                 continue;
             };
-            let want = naive_loop(&objects, &ray);
-            let got = index
-                .hit(&objects, &tags, &ray, f64::INFINITY)
-                .map(|(h, o, _)| (h, o.material));
-            assert_eq!(got, want, "{ray:?}");
-            hits += usize::from(want.is_some());
-            for t_max in [1.0, 5.0, 12.0] {
-                let blocked = objects.iter().any(|o| o.shape.occluded(&ray, t_max));
-                assert_eq!(
-                    index.occluded(&objects, &ray, t_max),
-                    blocked,
-                    "{ray:?} to {t_max}"
-                );
-            }
+            hits += usize::from(answers_as_the_naive_loop(&index, &objects, &tags, &ray));
         }
         assert!(hits > 2000, "most rays should hit something ({hits})");
     }
@@ -371,20 +378,7 @@ fn cut_triangles_answer_as_the_naive_loop() {
         let Some(ray) = Ray::towards(v(9.0), a + (b - a) * s + (c - a) * t) else {
             continue;
         };
-        let want = naive_loop(&objects, &ray);
-        let got = index
-            .hit(&objects, &tags, &ray, f64::INFINITY)
-            .map(|(h, o, _)| (h, o.material));
-        assert_eq!(got, want, "{ray:?}");
-        hits += usize::from(want.is_some());
-        for t_max in [1.0, 5.0, 12.0] {
-            let blocked = objects.iter().any(|o| o.shape.occluded(&ray, t_max));
-            assert_eq!(
-                index.occluded(&objects, &ray, t_max),
-                blocked,
-                "{ray:?} to {t_max}"
-            );
-        }
+        hits += usize::from(answers_as_the_naive_loop(&index, &objects, &tags, &ray));
         rays.push(ray);
     }
     assert!(hits > 15000, "most rays should hit something ({hits})");
