@@ -95,25 +95,51 @@ fn slot(name: &str) -> Option<usize> {
     Some(if i < 6 { i } else { 6 + (i - 6) % 2 })
 }
 
-/// A face's vertex indices, widened to `i64` so that any PLY integer type fits.
-struct Face(Vec<i64>);
+/// A face's vertex indices, widened to `i64` so that any PLY integer type fits. A face of
+/// up to four (nearly every face) is held in place: a million faces each in an allocation of
+/// its own would leave their memory resident and fragmented after the load.
+enum Face {
+    Few(u8, [i64; 4]),
+    Many(Vec<i64>),
+}
+
+impl Face {
+    fn from_list<T: Copy + Into<i64>>(list: &[T]) -> Self {
+        if list.len() <= 4 {
+            let mut few = [0; 4];
+            for (to, &from) in few.iter_mut().zip(list) {
+                *to = from.into();
+            }
+            Self::Few(list.len() as u8, few)
+        } else {
+            Self::Many(list.iter().map(|&i| i.into()).collect())
+        }
+    }
+
+    fn indices(&self) -> &[i64] {
+        match self {
+            Self::Few(len, few) => &few[..*len as usize],
+            Self::Many(many) => many,
+        }
+    }
+}
 
 impl PropertyAccess for Face {
     fn new() -> Self {
-        Self(Vec::new())
+        Self::Few(0, [0; 4])
     }
 
     fn set_property(&mut self, name: &str, property: Property) -> PropertyAccessResult {
         if !INDEX_NAMES.contains(&name) {
             return PropertyAccessResult::Ignored;
         }
-        self.0 = match property {
-            Property::ListChar(v) => v.into_iter().map(i64::from).collect(),
-            Property::ListUChar(v) => v.into_iter().map(i64::from).collect(),
-            Property::ListShort(v) => v.into_iter().map(i64::from).collect(),
-            Property::ListUShort(v) => v.into_iter().map(i64::from).collect(),
-            Property::ListInt(v) => v.into_iter().map(i64::from).collect(),
-            Property::ListUInt(v) => v.into_iter().map(i64::from).collect(),
+        *self = match property {
+            Property::ListChar(v) => Self::from_list(&v),
+            Property::ListUChar(v) => Self::from_list(&v),
+            Property::ListShort(v) => Self::from_list(&v),
+            Property::ListUShort(v) => Self::from_list(&v),
+            Property::ListInt(v) => Self::from_list(&v),
+            Property::ListUInt(v) => Self::from_list(&v),
             _ => return PropertyAccessResult::UnsupportedType,
         };
         PropertyAccessResult::Set
@@ -190,8 +216,9 @@ pub(super) fn load(path: &Path) -> Result<MeshData> {
     )
     .map_err(named)?;
     let mut mesh = Triangulator::new(positions);
-    for (number, Face(indices)) in faces.into_iter().enumerate() {
-        mesh.add_face(number, indices.into_iter()).map_err(named)?;
+    for (number, face) in faces.iter().enumerate() {
+        mesh.add_face(number, face.indices().iter().copied())
+            .map_err(named)?;
     }
     let mut mesh = mesh.finish().map_err(named)?;
     mesh.normals = normals;

@@ -54,7 +54,7 @@ fn corners(mesh: &MeshData) -> Vec<[[f64; 3]; 3]> {
 const SQUARE_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
 #[test]
-fn an_obj_quad_is_two_triangles_and_a_pentagon_three() {
+fn a_quad_is_two_triangles_and_a_pentagon_three() {
     let dir = Scratch::new("obj_polygons");
     let quad = load(&dir.file("quad.obj", format!("{SQUARE_OBJ}f 1 2 3 4\n"))).unwrap();
     assert_eq!(quad.positions.len(), 4);
@@ -64,6 +64,17 @@ fn an_obj_quad_is_two_triangles_and_a_pentagon_three() {
     let pentagon = "v 0 0 0\nv 2 0 0\nv 3 2 0\nv 1 3 0\nv -1 2 0\nf 1/1 2/1 3/1 4/1 5/1\nvt 0 0\n";
     let pentagon = load(&dir.file("pentagon.OBJ", pentagon)).unwrap();
     assert_eq!(pentagon.triangles, vec![[0, 1, 2], [0, 2, 3], [0, 3, 4]]);
+
+    // The same pentagon in PLY, after a triangle: a face of more than four indices is held
+    // apart from the short ones.
+    let ply = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n\
+        property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n\
+        0 0 0\n2 0 0\n3 2 0\n1 3 0\n-1 2 0\n3 4 0 1\n5 0 1 2 3 4\n";
+    let pentagon = load(&dir.file("pentagon.ply", ply)).unwrap();
+    assert_eq!(
+        pentagon.triangles,
+        vec![[4, 0, 1], [0, 1, 2], [0, 2, 3], [0, 3, 4]]
+    );
 }
 
 #[test]
