@@ -150,13 +150,14 @@ fn run(args: &Args) -> raytrace::Result<()> {
         .num_threads(args.threads.into())
         .build()
         .map_err(|e| raytrace::Error::InvalidSettings(format!("cannot start the threads: {e}")))?;
+    let primitives = geometry.primitives();
     let (build_s, stats) = pool.install(|| match args.precision.as_str() {
-        "f32" => measure::<f32>(args, &geometry),
-        _ => measure::<f64>(args, &geometry),
+        "f32" => measure::<f32>(args, geometry),
+        _ => measure::<f64>(args, geometry),
     })?;
     let measurement = Measurement {
         scene: args.scene.name(),
-        primitives: geometry.primitives(),
+        primitives,
         program: match args.bvh_quality.as_str() {
             "high" => format!("raytrace-{}-high", args.precision),
             _ => format!("raytrace-{}", args.precision),
@@ -172,9 +173,11 @@ fn run(args: &Args) -> raytrace::Result<()> {
 }
 
 /// Builds the scene in `F` and its BVH (timed alone: the scene builds it lazily on the first
-/// query, so `uses_bvh` forces it before the render starts), then renders it.
-fn measure<F: Float>(args: &Args, geometry: &Geometry) -> raytrace::Result<(f64, RenderStats)> {
+/// query, so `uses_bvh` forces it before the render starts), then renders it. The geometry
+/// is dropped once the scene holds its copy, as the Embree program drops its own.
+fn measure<F: Float>(args: &Args, geometry: Geometry) -> raytrace::Result<(f64, RenderStats)> {
     let mut scene: EnumScene<F> = geometry.scene()?;
+    drop(geometry);
     if args.bvh_quality == "high" {
         scene.set_bvh_quality(BvhQuality::High);
     }
