@@ -22,6 +22,7 @@ use crate::ray::Ray;
 use crate::shape::{Coordinates, Hit, Intersection};
 pub(crate) use packet::Found;
 use packet::{Key, Looped, Packer, Packets, kind};
+use rayon::prelude::*;
 
 /// A hit's record, the object hit and its material.
 pub type HitOn<'a, F, S, M> = (Hit<F>, &'a Object<S>, &'a M);
@@ -49,21 +50,24 @@ pub(super) struct Index<F> {
 }
 
 impl<F: Float> Index<F> {
-    /// Packs the parts of `objects` for `acceleration`, a BVH built at `quality`.
-    pub(super) fn build<S: Layout<F>, M>(
+    /// Packs the parts of `objects` for `acceleration`, a BVH built at `quality`. The passes
+    /// over every part and the packing of the leaves run on any threads, in the order a
+    /// sequential build gives.
+    pub(super) fn build<S: Layout<F>, M: Sync>(
         objects: &[Object<S, M>],
         acceleration: Acceleration,
         quality: BvhQuality,
     ) -> Self {
-        let keys = || {
-            let parts =
-                |(o, object): (usize, &Object<S, M>)| (0..object.shape.parts()).map(move |p| (o as u32, p));
-            objects.iter().enumerate().flat_map(parts)
-        };
+        let parts =
+            |(o, object): (usize, &Object<S, M>)| (0..object.shape.parts()).map(move |p| (o as u32, p));
+        let keys = || objects.par_iter().enumerate().flat_map_iter(parts);
         let shape = |&(o, _): &Key| &objects[o as usize].shape;
         let bounds = |k: &Key| shape(k).part_bounds(k.1);
-        let whole = keys().filter_map(|k| bounds(&k)).fold(Aabb::empty(), Aabb::union);
-        let bounded = keys().filter(|k| bounds(k).is_some()).count();
+        // The union of boxes is exact, so it does not depend on the order of the reduction.
+        let (whole, bounded) = keys()
+            .filter_map(|k| bounds(&k))
+            .map(|b| (b, 1usize))
+            .reduce(|| (Aabb::empty(), 0), |(a, m), (b, n)| (a.union(b), m + n));
         let wanted = match acceleration {
             Acceleration::Auto => bounded >= Acceleration::AUTO_THRESHOLD,
             Acceleration::Linear => false,
@@ -107,17 +111,19 @@ impl<F: Float> Index<F> {
                 }
             }),
         };
-        let kinds = (0..bvh.leaf_count()).map(|k| class(&tree_keys[bvh.leaf(k)[0] as usize]));
-        index.leaves.reserve_leaves(kinds);
-        let mut leaf_keys = Vec::new();
-        for k in 0..bvh.leaf_count() {
-            leaf_keys.clear();
-            leaf_keys.extend(bvh.leaf(k).iter().map(|&i| tree_keys[i as usize]));
+        let leaf_class = |k: usize| class(&tree_keys[bvh.leaf(k)[0] as usize]);
+        let counts = (0..bvh.leaf_count()).into_par_iter().map(|k| {
+            let mut count = [0; 3];
+            count[usize::from(leaf_class(k))] = 1;
+            count
+        });
+        let counts = counts.reduce(|| [0; 3], |a, b| [a[0] + b[0], a[1] + b[1], a[2] + b[2]]);
+        index.leaves.pack_leaves(counts, objects, |k, keys| {
+            keys.clear();
+            keys.extend(bvh.leaf(k).iter().map(|&i| tree_keys[i as usize]));
             // Pieces of one cut triangle may share a leaf: it is tested once.
-            dedup(&mut leaf_keys);
-            packer.pack(&mut leaf_keys, objects, &mut index.leaves);
-            debug_assert_eq!(index.leaves.len(), k + 1, "a leaf is one packet");
-        }
+            dedup(keys);
+        });
         index.bvh = Some(bvh);
         index
     }

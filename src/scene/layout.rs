@@ -26,7 +26,10 @@ pub enum Primitive<F> {
 /// the library's shapes and yours, say) needs an `impl`; the empty one,
 /// `impl<F: Float> Layout<F> for MyShape<F> {}`, is always correct, and forwarding the
 /// library's variants to [`ShapeKind`]'s keeps their fast path.
-pub trait Layout<F: Float>: Hittable<F> {
+///
+/// A scene's shapes are `Sync`: the threads that render a scene share them, and so do
+/// those that build its index.
+pub trait Layout<F: Float>: Hittable<F> + Sync {
     /// What part `part` of this shape is. A part described as a [`Primitive::Sphere`] or
     /// [`Primitive::Triangle`] must intersect exactly as that sphere or triangle does:
     /// the scene tests the description, and asks the shape only for the record.

@@ -4,9 +4,11 @@ use super::super::Object;
 use crate::float::Float;
 use crate::lanes::{F4, LANES};
 use crate::ray::Ray;
-use crate::scene::layout::{Layout, Primitive};
+use crate::scene::layout::Layout;
 use crate::shape::{Hittable, Intersection, Sphere, Sphere4, Triangle4};
-use crate::vec3::Vec3;
+
+mod pack;
+pub(super) use pack::{Packer, kind};
 
 /// A part of an object: `(object, part)`, both numbered as the scene holds them.
 pub(super) type Key = (u32, u32);
@@ -164,18 +166,6 @@ impl<F: Float> Packets<F> {
     pub(super) fn iter(&self) -> impl Iterator<Item = Packet<'_, F>> {
         (0..self.len()).map(|k| self.get(k))
     }
-
-    /// Makes room for exactly the packets of `leaves`, each given as its parts' [`kind`]:
-    /// a BVH's leaves, one packet each.
-    pub(super) fn reserve_leaves(&mut self, leaves: impl Iterator<Item = u8>) {
-        let mut count = [0; 3];
-        for kind in leaves {
-            count[usize::from(kind)] += 1;
-        }
-        self.spheres.reserve_exact(count[0]);
-        self.triangles.reserve_exact(count[1]);
-        self.others.reserve_exact(count[2]);
-    }
 }
 
 impl<F: Float> Packet<'_, F> {
@@ -311,88 +301,6 @@ impl<F: Float> Looped<F> {
         Packet {
             lanes,
             keys: &self.keys,
-        }
-    }
-}
-
-/// The kind of a part as a number, the BVH's class for it: a leaf holds one kind, so it
-/// is one packet.
-pub(super) fn kind<F>(primitive: &Primitive<F>) -> u8 {
-    match primitive {
-        Primitive::Sphere(_) => 0,
-        Primitive::Triangle(_) => 1,
-        Primitive::Other => 2,
-    }
-}
-
-/// Packs parts into packets, with buffers kept from call to call.
-pub(super) struct Packer<F> {
-    spheres: Vec<(Key, Sphere<F>)>,
-    triangles: Vec<(Key, [Vec3<F>; 3])>,
-    others: Vec<Key>,
-}
-
-impl<F: Float> Packer<F> {
-    pub(super) fn new() -> Self {
-        Self {
-            spheres: Vec::new(),
-            triangles: Vec::new(),
-            others: Vec::new(),
-        }
-    }
-
-    /// Appends to `out` the packets of the parts `keys`: spheres, then triangles, then the
-    /// others, each kind four to a packet in key order (the order the lanes' tie needs).
-    /// Parts of one kind, four at most (a BVH leaf's), make one packet.
-    pub(super) fn pack<S: Layout<F>, M>(
-        &mut self,
-        keys: &mut [Key],
-        objects: &[Object<S, M>],
-        out: &mut Packets<F>,
-    ) {
-        keys.sort_unstable();
-        let (spheres, triangles, others) = (&mut self.spheres, &mut self.triangles, &mut self.others);
-        spheres.clear();
-        triangles.clear();
-        others.clear();
-        for &key in keys.iter() {
-            match objects[key.0 as usize].shape.primitive(key.1) {
-                Primitive::Sphere(s) => spheres.push((key, s)),
-                Primitive::Triangle(v) => triangles.push((key, v)),
-                Primitive::Other => others.push(key),
-            }
-        }
-        let keys_of = |chunk: &mut dyn Iterator<Item = Key>| {
-            let mut keys = [(NONE, 0); LANES];
-            for (lane, key) in chunk.enumerate() {
-                keys[lane] = key;
-            }
-            keys
-        };
-        assert!(
-            out.triangles.is_empty() && out.others.is_empty() || spheres.is_empty(),
-            "packets come kind by kind"
-        );
-        for chunk in spheres.chunks(LANES) {
-            let lanes = match *chunk {
-                [(_, lone)] => Spheres::One(lone),
-                _ => Spheres::Four(Sphere4::new(chunk.iter().map(|&(_, s)| s))),
-            };
-            let keys = keys_of(&mut chunk.iter().map(|&(k, _)| k));
-            out.spheres.push(Keyed { lanes, keys });
-        }
-        assert!(
-            out.others.is_empty() || triangles.is_empty(),
-            "packets come kind by kind"
-        );
-        for chunk in triangles.chunks(LANES) {
-            out.triangles.push(Keyed {
-                lanes: Triangle4::new(chunk.iter().map(|&(_, v)| v)),
-                keys: keys_of(&mut chunk.iter().map(|&(k, _)| k)),
-            });
-        }
-        for chunk in others.chunks(LANES) {
-            out.others.push(keys_of(&mut chunk.iter().copied()));
         }
     }
 }

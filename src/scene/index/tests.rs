@@ -53,6 +53,28 @@ fn a_leaf_is_one_packet_of_one_kind() {
     }
 }
 
+/// The index, built on rayon's threads, is the same on any number of them: its passes
+/// and its leaves' packets come out in the order of a sequential build.
+#[test]
+fn the_index_is_the_same_on_any_number_of_threads() {
+    let objects = mixed(7, true);
+    let on = |threads| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let index = pool.install(|| Index::build(&objects, Acceleration::Bvh, BvhQuality::Medium));
+        format!("{index:?}")
+    };
+    let one = on(1);
+    assert!(
+        one.contains("Triangle4") && one.contains("Sphere4"),
+        "both kinds are packed"
+    );
+    assert_eq!(one, on(2));
+    assert_eq!(one, on(3));
+}
+
 /// A material that only names its object, for telling which object a query found.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Tag(u32);
