@@ -10,7 +10,7 @@ mod wide;
 
 pub(crate) use stream::Streams;
 
-use crate::aabb::Aabb;
+use crate::aabb::{Aabb, SlabRay};
 use crate::float::Float;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
@@ -180,6 +180,7 @@ impl<F: Float> Bvh<F> {
     ) {
         const INLINE: usize = 24;
         let need = self.stack_size();
+        let ray = &SlabRay::new(ray);
         if need <= INLINE {
             let stack = &mut [(Child::Empty, F::zero()); INLINE];
             self.traverse_wide::<PAD>(self.root, stack, ray, t_max, pad, visit);

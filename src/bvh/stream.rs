@@ -103,7 +103,6 @@ impl<F: Float> Bvh<F> {
         stack.resize(stack.len().max(self.stack_size()), (Child::Empty, F::zero()));
         let mut walk = Walk {
             bvh: self,
-            rays,
             prepared,
             stack,
             t_max,
@@ -120,7 +119,6 @@ impl<F: Float> Bvh<F> {
 /// One stream's walk down the tree.
 struct Walk<'w, F, L> {
     bvh: &'w Bvh<F>,
-    rays: &'w [Ray<F>],
     prepared: &'w [SlabRay<F>],
     stack: &'w mut [(Child, F)],
     t_max: &'w mut [F],
@@ -144,7 +142,7 @@ impl<F: Float, L: FnMut(usize, &[RayIndex], &mut [F])> Walk<'_, F, L> {
                 self.bvh.traverse_wide::<false>(
                     start,
                     self.stack,
-                    &self.rays[ri],
+                    &self.prepared[ri],
                     t_max[ri],
                     F::zero(),
                     |k, _| {

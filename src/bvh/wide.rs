@@ -6,7 +6,6 @@ use super::{Bvh, Node};
 use crate::aabb::{SlabRay, slab_test};
 use crate::float::Float;
 use crate::lanes::F4;
-use crate::ray::Ray;
 
 /// What a lane of a wide node points to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -165,20 +164,19 @@ fn entries<F: Float, const PAD: bool>(
 }
 
 impl<F: Float> Bvh<F> {
-    /// The wide traversal behind [`Bvh::traverse`], from the subtree `start` (the root
-    /// for the whole tree); `stack` holds at least `3·wide_depth + 1` entries. With `PAD`,
+    /// The wide traversal behind [`Bvh::traverse`] of the prepared ray `r`, from the subtree
+    /// `start` (the root for the whole tree); `stack` holds at least `3·wide_depth + 1` entries. With `PAD`,
     /// every box is grown by `pad` on every side ([`Bvh::traverse_padded`]).
     #[inline]
     pub(super) fn traverse_wide<const PAD: bool>(
         &self,
         start: Option<Child>,
         stack: &mut [(Child, F)],
-        ray: &Ray<F>,
+        r: &SlabRay<F>,
         mut t_max: F,
         pad: F,
         mut visit: impl FnMut(usize, F) -> Option<F>,
     ) {
-        let r = SlabRay::new(ray);
         let octant = r.octant();
         // Toward the origin: down the axis where the direction is positive (the near face
         // is the low one).
@@ -192,7 +190,7 @@ impl<F: Float> Bvh<F> {
             match current {
                 Child::Node(i) => {
                     let n = &self.wide[i as usize];
-                    let (t, mut entered) = entries::<F, PAD>(&r, octant, n, t_max, &shift);
+                    let (t, mut entered) = entries::<F, PAD>(r, octant, n, t_max, &shift);
                     if entered.count_ones() == 1 {
                         // One child entered (the common case): go straight down.
                         current = n.child[entered.trailing_zeros() as usize];
