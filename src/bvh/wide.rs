@@ -164,9 +164,10 @@ fn entries<F: Float, const PAD: bool>(
 }
 
 impl<F: Float> Bvh<F> {
-    /// The wide traversal behind [`Bvh::traverse`] of the prepared ray `r`, from the subtree
-    /// `start` (the root for the whole tree); `stack` holds at least `3·wide_depth + 1` entries. With `PAD`,
-    /// every box is grown by `pad` on every side ([`Bvh::traverse_padded`]).
+    /// The wide traversal behind [`Bvh::traverse`] of the prepared ray `r`, from the
+    /// subtree `start` (the root for the whole tree); `stack` holds at least
+    /// `3·wide_depth + 1` entries. With `PAD`, every box is grown by `pad` on every side
+    /// ([`Bvh::traverse_padded`]).
     #[inline]
     pub(super) fn traverse_wide<const PAD: bool>(
         &self,
