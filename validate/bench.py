@@ -11,7 +11,9 @@ same horizontal field of view over the film edges, so its vertical view differs 
 1/(2 ny - 1), 0.13 % at 800 x 400 -- irrelevant for timing, which is all it is used for.
 Times are wall clock of the render alone: ours as the binary reports it, Mitsuba's
 mi.render (llvm_ad_rgb: the first call includes compiling its kernels, reported apart).
-llvm_ad_rgb needs Debian's libLLVM (apt-get install -y libllvm19; drjit aborts with 15)
+llvm_ad_rgb needs Debian's libLLVM (apt-get install -y libllvm19; drjit aborts with 14 or 15,
+and picks one of those where it is installed too: then set
+DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so)
 and intersects spheres in float32. Machine noise: see the report's conditions.
 """
 
