@@ -136,17 +136,26 @@ mod tests {
     use super::*;
     use std::io::Write;
 
-    fn temp(name: &str, bytes: &[u8]) -> std::path::PathBuf {
-        let dir = std::env::temp_dir().join(format!("raytrace-source-{}", std::process::id()));
+    /// A file of `bytes` in a folder of its own, removed on drop.
+    struct Temp(std::path::PathBuf);
+
+    impl Drop for Temp {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_dir_all(self.0.parent().unwrap());
+        }
+    }
+
+    fn temp(name: &str, bytes: &[u8]) -> Temp {
+        let dir = std::env::temp_dir().join(format!("raytrace-source-{}-{name}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join(name);
         std::fs::File::create(&path).unwrap().write_all(bytes).unwrap();
-        path
+        Temp(path)
     }
 
     #[test]
     fn lines_are_counted_as_read() {
-        let mut s = Source::open(&temp("lines.obj", b"a\nbb\n\nccc")).unwrap();
+        let mut s = Source::open(&temp("lines.obj", b"a\nbb\n\nccc").0).unwrap();
         let mut line = String::new();
         assert_eq!(s.line(), 1);
         s.read_line(&mut line).unwrap();
@@ -161,8 +170,9 @@ mod tests {
     #[test]
     fn a_line_past_the_bound_stops_text_but_not_binary() {
         let long = vec![b'x'; MAX_LINE_BYTES as usize + 100_000];
-        let path = temp("long.obj", &long);
-        let mut s = Source::open(&path).unwrap();
+        let file = temp("long.obj", &long);
+        let path = &file.0;
+        let mut s = Source::open(path).unwrap();
         let mut line = String::new();
         assert!(s.read_line(&mut line).is_err());
         assert!(
@@ -171,7 +181,7 @@ mod tests {
             s.overlong()
         );
         assert!(line.len() as u64 <= MAX_LINE_BYTES + 8192 * 2);
-        let mut s = Source::open(&path).unwrap();
+        let mut s = Source::open(path).unwrap();
         s.binary();
         let mut all = Vec::new();
         s.read_to_end(&mut all).unwrap();

@@ -6,7 +6,6 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-use std::sync::OnceLock;
 
 mod folder;
 
@@ -51,25 +50,34 @@ fn run(dir: &Path, args: &[String]) -> Output {
 }
 
 /// The folder every case copies its tiles from: `t1.rtile` and `t2.rtile` of [`SCENE`],
-/// and `other2.rtile`, the second tile rendered from [`OTHER_MESH`].
-fn tiles() -> &'static Path {
-    static DIR: OnceLock<PathBuf> = OnceLock::new();
-    DIR.get_or_init(|| {
+/// and `other2.rtile`, the second tile rendered from [`OTHER_MESH`]; removed on drop.
+struct Tiles(PathBuf);
+
+impl Tiles {
+    fn render() -> Self {
         let dir = std::env::temp_dir().join(format!("raytrace-adversarial-tiles-{}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
         fs::create_dir_all(&dir).unwrap();
+        let tiles = Self(dir);
+        let dir = &tiles.0;
         fs::write(dir.join("s.toml"), SCENE).unwrap();
         let render = |mesh: &str, tile: &str, out: &str| {
             fs::write(dir.join("mesh.obj"), mesh).unwrap();
             let args = ["render", "s.toml", "--quiet", "--tile", tile, "--out", out].map(String::from);
-            let o = run(&dir, &args);
+            let o = run(dir, &args);
             assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         };
         render(OTHER_MESH, "2/2", "other2.rtile");
         render(MESH, "1/2", "t1.rtile");
         render(MESH, "2/2", "t2.rtile");
-        dir
-    })
+        tiles
+    }
+}
+
+impl Drop for Tiles {
+    fn drop(&mut self) {
+        let _ = fs::remove_dir_all(&self.0);
+    }
 }
 
 /// One bad input: how to prepare the folder, the command, the exit code and the words
@@ -307,15 +315,17 @@ const CASES: &[Case] = &[
 #[cfg(unix)]
 #[test]
 fn bad_files_fail_clearly_and_change_nothing() {
+    let tiles = Tiles::render();
     let mut failures = Vec::new();
     for (i, case) in CASES.iter().enumerate() {
         let dir = std::env::temp_dir().join(format!("raytrace-adversarial-{}-{i}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
         fs::create_dir_all(&dir).unwrap();
         for name in ["s.toml", "mesh.obj", "t1.rtile", "t2.rtile", "other2.rtile"] {
-            fs::copy(tiles().join(name), dir.join(name)).unwrap();
+            fs::copy(tiles.0.join(name), dir.join(name)).unwrap();
         }
         if !(case.setup)(&dir) {
+            fs::remove_dir_all(&dir).unwrap();
             continue;
         }
         let before = snapshot(&dir);

@@ -276,10 +276,7 @@ pub(super) fn case(field: Field) -> Option<Case> {
             "background.file",
         ),
         Field::EnvironmentScale => (
-            format!(
-                "[background]\ntype = \"envmap\"\nfile = {:?}\nscale = -1\n",
-                small_map().display()
-            ),
+            "[background]\ntype = \"envmap\"\nfile = \"textures/sky.hdr\"\nscale = -1\n".into(),
             false,
             "background.scale",
         ),
@@ -317,15 +314,4 @@ pub(super) fn case(field: Field) -> Option<Case> {
         Field::Custom(_) => return None,
     };
     Some(Case { text, f32, field, at })
-}
-
-/// A 2×1 OpenEXR environment map, written once into the temporary folder.
-fn small_map() -> &'static Path {
-    static MAP: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
-    MAP.get_or_init(|| {
-        let path = std::env::temp_dir().join(format!("raytrace-field-map-{}.exr", std::process::id()));
-        let image = crate::Image::from_pixels(2, 1, vec![[1.0, 0.5, 0.25]; 2]).unwrap();
-        crate::image::write_exr(&path, &image).unwrap();
-        path
-    })
 }
