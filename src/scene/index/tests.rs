@@ -283,7 +283,7 @@ fn sizes_are_the_documented_ones() {
         sizes
     }
     assert_eq!(sizes::<f32>(), [32, 100, 176, 160]);
-    assert_eq!(sizes::<f64>(), [48, 168, 320, 256]);
+    assert_eq!(sizes::<f64>(), [48, 168, 320, 288]);
 }
 
 /// The plain loop over the objects (`Acceleration::Linear`) and the packets in lanes a
