@@ -173,10 +173,13 @@ enum Subtree<F> {
 /// Builds the subtree over `items`, which sit at `first` in the whole array.
 fn subtree<F: Float>(items: &mut [Item<F>], first: usize, span: Span<F>, depth: usize) -> Subtree<F> {
     if items.len() < TASK {
+        // Room for the most a subtree can need (`2n − 1` nodes, `n` leaves): grown by
+        // doubling, the parts left their old blocks scattered over the heap, resident.
         let mut part = Part {
-            nodes: vec![empty_node()],
-            leaves: Vec::new(),
+            nodes: Vec::with_capacity(2 * items.len()),
+            leaves: Vec::with_capacity(items.len()),
         };
+        part.nodes.push(empty_node());
         part.grow(0, items, first, span, depth);
         return Subtree::Part(part);
     }
