@@ -223,6 +223,12 @@ pub(crate) fn wide_node_bytes<F>() -> usize {
     std::mem::size_of::<Wide<F>>() + std::mem::size_of::<[[u8; 4]; 8]>()
 }
 
+/// The alignment of a node of the tree the traversal runs on (a cache line).
+#[cfg(test)]
+pub(crate) fn wide_node_align<F>() -> usize {
+    std::mem::align_of::<Wide<F>>()
+}
+
 /// [`Bvh::sah_cost`] of the binary tree `nodes`.
 fn sah_cost<F: Float>(nodes: &[Node<F>]) -> f64 {
     let area = |n: &Node<F>| Aabb::new(n.bounds[0], n.bounds[1]).surface_area().to_f64();
