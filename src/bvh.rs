@@ -109,7 +109,7 @@ impl<F: Float> Bvh<F> {
         };
         if let Some(root) = nodes.first() {
             // Room for the most wide nodes the collapse can make, one per interior binary
-            // node: it makes about a third as many, and pages never written are never
+            // node: it makes fewer than half as many, and pages never written are never
             // resident. A vector of aligned nodes that grew or shrank would be copied.
             bvh.wide = Vec::with_capacity(nodes.len() - bvh.leaves.len());
             bvh.root = Some(if root.count > 0 {
