@@ -7,8 +7,16 @@ use crate::aabb::Aabb;
 use crate::float::{Float, lit};
 use rayon::prelude::*;
 
-/// Centroid bins per axis for the SAH sweep.
+/// Most centroid bins per axis for the SAH sweep.
 const BINS: usize = 16;
+
+/// Bins per axis for a node of `n` primitives: `4 + n/20`, at most [`BINS`] (Embree's
+/// count). A small node's split needs few candidates, and each bin costs its sweep whatever
+/// it holds: with 16 bins for every node the sweeps took a quarter of the build (`perf`).
+fn bins_for(n: usize) -> usize {
+    (4 + n / 20).min(BINS)
+}
+
 /// Depth from which nodes split at the middle centroid instead of by SAH, so the tree's depth,
 /// and the traversal stack, stay below `MEDIAN_DEPTH + 32` whatever the input.
 const MEDIAN_DEPTH: usize = 40;
@@ -30,16 +38,18 @@ struct Bin<F> {
 struct Binner<F> {
     lo: F,
     scale: F,
+    /// Bins in use, at most [`BINS`].
+    count: usize,
 }
 
 impl<F: Float> Binner<F> {
-    fn new(lo: F, hi: F) -> Self {
+    fn new(lo: F, hi: F, count: usize) -> Self {
         let scale = if hi > lo {
-            lit::<F>(BINS as f64) / (hi - lo)
+            lit::<F>(count as f64) / (hi - lo)
         } else {
             F::zero()
         };
-        Self { lo, scale }
+        Self { lo, scale, count }
     }
 
     /// `⌊(c − lo)·scale⌋` clamped to the bins (a NaN to bin 0).
@@ -47,7 +57,7 @@ impl<F: Float> Binner<F> {
     fn bin(&self, c: F) -> usize {
         let x = (c - self.lo) * self.scale;
         let x = if x > F::zero() { x } else { F::zero() };
-        (x.to_f64() as usize).min(BINS - 1)
+        (x.to_f64() as usize).min(self.count - 1)
     }
 }
 
@@ -138,7 +148,8 @@ fn split_by_position<F: Float>(
         return median_split(items);
     }
     let cb = &span.centroids;
-    let binners = [0, 1, 2].map(|axis| Binner::new(cb.min[axis], cb.max[axis]));
+    let count = bins_for(n);
+    let binners = [0, 1, 2].map(|axis| Binner::new(cb.min[axis], cb.max[axis], count));
     let bins = if n >= PAR_BIN {
         bin_in_chunks(items, &binners)
     } else {
@@ -147,7 +158,7 @@ fn split_by_position<F: Float>(
     let area = span.bounds.surface_area().to_f64().max(f64::MIN_POSITIVE);
     let mut best: Option<Best<F>> = None;
     for (axis, bins) in bins.iter().enumerate() {
-        sweep(axis, bins, area, &mut best);
+        sweep(axis, &bins[..count], area, &mut best);
     }
     match best {
         // Every centroid coincides: no plane separates them.
@@ -178,46 +189,46 @@ fn split_by_position<F: Float>(
 
 /// Updates `best` with the cheapest boundary between the bins of `axis`.
 ///
-/// Only the non-empty bins are swept: a boundary after an empty bin costs what the one
-/// before it costs, and the earlier boundary wins a tie, so skipping it changes nothing.
-fn sweep<F: Float>(axis: usize, bins: &[Bin<F>; BINS], area: f64, best: &mut Option<Best<F>>) {
-    let mut full = [(0usize, bins[0]); BINS];
-    let mut k = 0;
-    for (i, b) in bins.iter().enumerate() {
-        if b.count > 0 {
-            full[k] = (i, *b);
-            k += 1;
-        }
-    }
-    if k < 2 {
-        return;
-    }
+/// Only boundaries right after a non-empty bin, with primitives on both sides, are
+/// costed: one after an empty bin costs what the boundary before it costs, and the earlier
+/// boundary wins a tie, so skipping it changes nothing.
+fn sweep<F: Float>(axis: usize, bins: &[Bin<F>], area: f64, best: &mut Option<Best<F>>) {
     // From the right for the right-hand boxes and counts, then from the left.
     let mut right = [(Aabb::empty(), 0u32); BINS];
     let (mut acc, mut cnt) = (Aabb::empty(), 0u32);
-    for j in (1..k).rev() {
-        acc = union(acc, full[j].1.bounds);
-        cnt += full[j].1.count;
+    for j in (1..bins.len()).rev() {
+        acc = union(acc, bins[j].bounds);
+        cnt += bins[j].count;
         right[j] = (acc, cnt);
     }
     let packets = |n: u32| n.div_ceil(MAX_LEAF as u32) as f64;
     let (mut acc, mut cnt) = (Aabb::empty(), 0u32);
-    for j in 0..k - 1 {
-        acc = union(acc, full[j].1.bounds);
-        cnt += full[j].1.count;
+    for j in 0..bins.len() - 1 {
+        acc = union(acc, bins[j].bounds);
+        cnt += bins[j].count;
         let (rb, rc) = right[j + 1];
-        let cost = TRAVERSAL_COST
-            + (acc.surface_area().to_f64() * packets(cnt) + rb.surface_area().to_f64() * packets(rc)) / area;
+        if bins[j].count == 0 || rc == 0 {
+            continue;
+        }
+        let cost = TRAVERSAL_COST + (full_area(acc) * packets(cnt) + full_area(rb) * packets(rc)) / area;
         if best.as_ref().is_none_or(|b| cost < b.cost) {
             *best = Some(Best {
                 cost,
                 axis,
-                last: full[j].0,
+                last: j,
                 left: acc,
                 right: rb,
             });
         }
     }
+}
+
+/// [`Aabb::surface_area`] of a box known to hold something, without its test for the empty
+/// box: the same value.
+#[inline(always)]
+fn full_area<F: Float>(b: Aabb<F>) -> f64 {
+    let d = b.max - b.min;
+    ((d.x * d.y + d.y * d.z + d.z * d.x) * lit::<F>(2.0)).to_f64()
 }
 
 /// Splits at the middle centroid (half the items on each side) along the longest axis (a
