@@ -211,7 +211,7 @@ fn render_no_t_min<F: Float>(case: &Case) -> raytrace::Result<Image> {
         let ShapeKind::Sphere(s) = o.shape else {
             unreachable!("four_mirrors holds spheres only")
         };
-        naive.add(NoTMinSphere(s), o.material.clone());
+        naive.add(NoTMinSphere(s), scene.material(o.material).clone());
     }
     let Cam::Screen(camera) = case.camera else {
         unreachable!("four_mirrors uses the spec's camera")
