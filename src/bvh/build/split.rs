@@ -12,7 +12,7 @@ const BINS: usize = 16;
 
 /// Bins per axis for a node of `n` primitives: `4 + n/20`, at most [`BINS`] (Embree's
 /// count). A small node's split needs few candidates, and each bin costs its sweep whatever
-/// it holds: with 16 bins for every node the sweeps took a quarter of the build (`perf`).
+/// it holds.
 fn bins_for(n: usize) -> usize {
     (4 + n / 20).min(BINS)
 }
@@ -55,8 +55,8 @@ impl<F: Float> Binner<F> {
     /// `⌊(c − lo)·scale⌋` clamped to the bins (a NaN to bin 0).
     ///
     /// Converted to `u8`, which saturates (below 0 and NaN to 0) by clamping in the float
-    /// unit, without a branch: the bins are at most 16. A conversion to `usize` compiled to
-    /// two comparisons and a branch around the instruction.
+    /// unit, without a branch: the bins are at most 16, and a conversion to `usize` needs
+    /// comparisons and a branch around it.
     #[inline(always)]
     fn bin(&self, c: F) -> usize {
         let x = (c - self.lo) * self.scale;
