@@ -7,6 +7,7 @@
 
 use clap::Parser;
 use rand::{RngExt, SeedableRng};
+use rayon::prelude::*;
 use raytrace::DefaultRng;
 use raytrace::aabb::Aabb;
 use raytrace::bvh::Bvh;
@@ -74,8 +75,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .build()?;
     let start = Instant::now();
     let bvh = pool.install(|| match args.split {
-        false => Bvh::build(boxes.iter().copied()),
-        true => Bvh::build_split(boxes.iter().map(|&b| (b, 0)), |i| {
+        false => Bvh::build_classes(boxes.par_iter().map(|&b| (b, 0))),
+        true => Bvh::build_split(boxes.par_iter().map(|&b| (b, 0)), |i| {
             triangles.get(i as usize).copied()
         }),
     });

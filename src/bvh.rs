@@ -64,18 +64,24 @@ impl<F: Float> Bvh<F> {
     /// # Panics
     /// With more than `u32::MAX` primitives.
     pub fn build(bounds: impl IntoIterator<Item = Aabb<F>>) -> Self {
-        Self::build_classes(bounds.into_iter().map(|b| (b, 0)))
+        let items = build::items(bounds.into_iter().map(|b| (b, 0)));
+        Self::from_arrays(build::build(items, None::<fn(u32) -> Option<[Vec3<F>; 3]>>))
     }
 
-    /// [`Bvh::build`] over primitives given as `(box, class)`, where no leaf holds two
-    /// classes: a scene gives each kind of shape a class, so that a leaf is tested one way.
-    /// The leaves are numbered class by class, every leaf of a lower class before any of a
-    /// higher one.
+    /// [`Bvh::build`] over primitives given as `(box, class)` by a parallel iterator (a
+    /// `Vec` or a slice's `par_iter` will do), where no leaf holds two classes: a scene gives
+    /// each kind of shape a class, so that a leaf is tested one way. The leaves are numbered
+    /// class by class, every leaf of a lower class before any of a higher one.
     ///
     /// # Panics
     /// With more than `u32::MAX` primitives.
-    pub fn build_classes(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) -> Self {
-        Self::from_arrays(build::build(prims, None::<fn(u32) -> Option<[Vec3<F>; 3]>>))
+    pub fn build_classes<P>(prims: P) -> Self
+    where
+        P: IntoParallelIterator<Item = (Aabb<F>, u8)>,
+        P::Iter: IndexedParallelIterator,
+    {
+        let items = build::items_par(prims.into_par_iter());
+        Self::from_arrays(build::build(items, None::<fn(u32) -> Option<[Vec3<F>; 3]>>))
     }
 
     /// [`Bvh::build_classes`] with spatial splits, the quality Embree calls high: each
@@ -88,11 +94,13 @@ impl<F: Float> Bvh<F> {
     ///
     /// # Panics
     /// With more than `u32::MAX` primitives or pieces.
-    pub fn build_split(
-        prims: impl IntoIterator<Item = (Aabb<F>, u8)>,
-        triangle: impl Fn(u32) -> Option<[Vec3<F>; 3]>,
-    ) -> Self {
-        Self::from_arrays(build::build(prims, Some(triangle)))
+    pub fn build_split<P>(prims: P, triangle: impl Fn(u32) -> Option<[Vec3<F>; 3]>) -> Self
+    where
+        P: IntoParallelIterator<Item = (Aabb<F>, u8)>,
+        P::Iter: IndexedParallelIterator,
+    {
+        let items = build::items_par(prims.into_par_iter());
+        Self::from_arrays(build::build(items, Some(triangle)))
     }
 
     fn from_arrays((nodes, indices, leaves): build::Arrays<F>) -> Self {
@@ -384,7 +392,8 @@ mod tests {
         let prims = boxes
             .iter()
             .enumerate()
-            .flat_map(|(i, &b)| [(b, class(i)), (b, class(i + 1))]);
+            .flat_map(|(i, &b)| [(b, class(i)), (b, class(i + 1))])
+            .collect::<Vec<_>>();
         let bvh = Bvh::build_classes(prims);
         let mut last = 0;
         for k in 0..bvh.leaf_count() {

@@ -24,27 +24,24 @@ const TASK: usize = 4096;
 /// A binary tree's `(nodes, indices, leaves)` as [`super::Bvh`] stores them.
 pub(super) type Arrays<F> = (Vec<Node<F>>, Vec<u32>, Vec<(u32, u32)>);
 
-/// The binary tree over the primitives that `prims` yields as `(box, class)`, numbered in
-/// that order (empty for none); no leaf holds two classes, and the leaves are numbered class
-/// by class (see [`group_by_class`]). With `triangle`, the triangles it names
-/// (`triangle(i)` gives primitive `i`'s vertices) are first cut into pieces
-/// ([`presplit::presplit`]), so a triangle may sit in more than one leaf.
-pub(super) fn build<F: Float, T>(
-    prims: impl IntoIterator<Item = (Aabb<F>, u8)>,
-    triangle: Option<T>,
-) -> Arrays<F>
+/// The items of the primitives that `prims` yields as `(box, class)`, numbered in that order.
+pub(super) fn items<F: Float>(prims: impl IntoIterator<Item = (Aabb<F>, u8)>) -> Vec<Item<F>> {
+    prims.into_iter().enumerate().map(Item::new).collect()
+}
+
+/// [`items`] from a parallel iterator: the same items, made on any threads.
+pub(super) fn items_par<F: Float>(prims: impl IndexedParallelIterator<Item = (Aabb<F>, u8)>) -> Vec<Item<F>> {
+    prims.enumerate().map(Item::new).collect()
+}
+
+/// The binary tree over `items` ([`items`]; empty for none); no leaf holds two classes,
+/// and the leaves are numbered class by class (see [`group_by_class`]). With `triangle`,
+/// the triangles it names (`triangle(i)` gives primitive `i`'s vertices) are first cut into
+/// pieces ([`presplit::presplit`]), so a triangle may sit in more than one leaf.
+pub(super) fn build<F: Float, T>(mut items: Vec<Item<F>>, triangle: Option<T>) -> Arrays<F>
 where
     T: Fn(u32) -> Option<[Vec3<F>; 3]>,
 {
-    let mut items: Vec<Item<F>> = prims
-        .into_iter()
-        .enumerate()
-        .map(|(i, (b, class))| Item {
-            bounds: b,
-            index: i as u32,
-            class,
-        })
-        .collect();
     if let Some(triangle) = triangle {
         items = presplit::presplit(items, triangle);
     }
@@ -92,13 +89,22 @@ fn group_by_class<F: Float>(nodes: &mut [Node<F>], leaves: &mut Vec<(u32, u32)>,
 /// f32: the centroid is recomputed, not stored, which saves more memory than time); a
 /// piece of a cut triangle is an item of its own, with the triangle's index.
 #[derive(Clone, Copy)]
-struct Item<F> {
+pub(super) struct Item<F> {
     bounds: Aabb<F>,
     index: u32,
     class: u8,
 }
 
 impl<F: Float> Item<F> {
+    /// Primitive `i`'s item.
+    fn new((i, (bounds, class)): (usize, (Aabb<F>, u8))) -> Self {
+        Self {
+            bounds,
+            index: i as u32,
+            class,
+        }
+    }
+
     #[inline(always)]
     fn centroid(&self) -> Vec3<F> {
         self.bounds.centroid()

@@ -58,9 +58,8 @@ impl<F: Float> Index<F> {
         acceleration: Acceleration,
         quality: BvhQuality,
     ) -> Self {
-        let parts =
-            |(o, object): (usize, &Object<S, M>)| (0..object.shape.parts()).map(move |p| (o as u32, p));
-        let keys = || objects.par_iter().enumerate().flat_map_iter(parts);
+        let runs = runs(objects.iter().map(|object| object.shape.parts()));
+        let keys = || runs.par_iter().flat_map_iter(|&start| run(objects, start));
         let shape = |&(o, _): &Key| &objects[o as usize].shape;
         let bounds = |k: &Key| shape(k).part_bounds(k.1);
         // The union of boxes is exact, so it does not depend on the order of the reduction.
@@ -91,16 +90,17 @@ impl<F: Float> Index<F> {
         if plain {
             return index;
         }
-        let mut looped: Vec<Key> = keys().filter(|k| !in_tree(k)).collect();
+        let (tree_keys, mut looped): (Vec<Key>, Vec<Key>) = keys().partition(in_tree);
         let mut packets = Packets::default();
         packer.pack(&mut looped, objects, &mut packets);
         index.looped = packets.iter().map(Looped::new).collect();
         if !wanted {
             return index;
         }
-        let tree_keys: Vec<Key> = keys().filter(in_tree).collect();
         let class = |k: &Key| kind(&shape(k).primitive(k.1));
-        let prims = tree_keys.iter().map(|k| (bounds(k).unwrap_or(whole), class(k)));
+        let prims = tree_keys
+            .par_iter()
+            .map(|k| (bounds(k).unwrap_or(whole), class(k)));
         let bvh = match quality {
             BvhQuality::Medium => Bvh::build_classes(prims),
             BvhQuality::High => Bvh::build_split(prims, |i| {
@@ -276,6 +276,39 @@ fn record<F: Float, S: Layout<F>, M: Material<F>>(
 #[inline(never)]
 fn coordinates<F: Float, S: Layout<F>>(shape: &S, ray: &Ray<F>, hit: &Intersection<F>) -> Coordinates<F> {
     shape.coordinates(ray, hit, &shape.finish(ray, hit))
+}
+
+/// Parts a pass over every part takes in one go ([`runs`]).
+const RUN: usize = 4096;
+
+/// Where each run of [`RUN`] consecutive parts starts, given each object's count of parts:
+/// a pass over the runs splits evenly over the threads, whether the parts are many objects
+/// (spheres) or one object's (a mesh's triangles).
+fn runs(parts: impl Iterator<Item = u32>) -> Vec<Key> {
+    let (mut starts, mut filled) = (Vec::new(), 0);
+    for (o, n) in parts.enumerate() {
+        let mut p = 0;
+        while p < n {
+            if filled == 0 {
+                starts.push((o as u32, p));
+            }
+            let taken = (n - p).min((RUN - filled) as u32);
+            p += taken;
+            filled = (filled + taken as usize) % RUN;
+        }
+    }
+    starts
+}
+
+/// The keys of the run that starts at `start` ([`runs`]): the next [`RUN`] parts, or as many
+/// as are left.
+fn run<S: Layout<F>, M, F: Float>(objects: &[Object<S, M>], (o, p): Key) -> impl Iterator<Item = Key> {
+    let first = move |i: usize| if i == 0 { p } else { 0 };
+    objects[o as usize..]
+        .iter()
+        .enumerate()
+        .flat_map(move |(i, object)| (first(i)..object.shape.parts()).map(move |p| (o + i as u32, p)))
+        .take(RUN)
 }
 
 /// `keys` with each key only at its first place (a leaf's at most four: no sort needed).
