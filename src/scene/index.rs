@@ -11,6 +11,7 @@
 //! ([`super::plain`]), the same answers read as the specification states them.
 
 mod packet;
+mod runs;
 
 use super::layout::{Layout, Primitive};
 use super::{Acceleration, BvhQuality, Object, plain};
@@ -23,6 +24,7 @@ use crate::shape::{Coordinates, Hit, Intersection};
 pub(crate) use packet::Found;
 use packet::{Key, Looped, Packer, Packets, kind};
 use rayon::prelude::*;
+use runs::{run, runs};
 
 /// A hit's record, the object hit and its material.
 pub type HitOn<'a, F, S, M> = (Hit<F>, &'a Object<S>, &'a M);
@@ -276,39 +278,6 @@ fn record<F: Float, S: Layout<F>, M: Material<F>>(
 #[inline(never)]
 fn coordinates<F: Float, S: Layout<F>>(shape: &S, ray: &Ray<F>, hit: &Intersection<F>) -> Coordinates<F> {
     shape.coordinates(ray, hit, &shape.finish(ray, hit))
-}
-
-/// Parts a pass over every part takes in one go ([`runs`]).
-const RUN: usize = 4096;
-
-/// Where each run of [`RUN`] consecutive parts starts, given each object's count of parts:
-/// a pass over the runs splits evenly over the threads, whether the parts are many objects
-/// (spheres) or one object's (a mesh's triangles).
-fn runs(parts: impl Iterator<Item = u32>) -> Vec<Key> {
-    let (mut starts, mut filled) = (Vec::new(), 0);
-    for (o, n) in parts.enumerate() {
-        let mut p = 0;
-        while p < n {
-            if filled == 0 {
-                starts.push((o as u32, p));
-            }
-            let taken = (n - p).min((RUN - filled) as u32);
-            p += taken;
-            filled = (filled + taken as usize) % RUN;
-        }
-    }
-    starts
-}
-
-/// The keys of the run that starts at `start` ([`runs`]): the next [`RUN`] parts, or as many
-/// as are left.
-fn run<S: Layout<F>, M, F: Float>(objects: &[Object<S, M>], (o, p): Key) -> impl Iterator<Item = Key> {
-    let first = move |i: usize| if i == 0 { p } else { 0 };
-    objects[o as usize..]
-        .iter()
-        .enumerate()
-        .flat_map(move |(i, object)| (first(i)..object.shape.parts()).map(move |p| (o + i as u32, p)))
-        .take(RUN)
 }
 
 /// `keys` with each key only at its first place (a leaf's at most four: no sort needed).

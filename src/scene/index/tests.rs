@@ -75,50 +75,6 @@ fn the_index_is_the_same_on_any_number_of_threads() {
     assert_eq!(one, on(3));
 }
 
-/// The runs of parts ([`runs`], [`run`]) give every part of every object once, in the
-/// objects' order, whether the parts are spread over many objects or held by one, and
-/// every run but the last holds [`RUN`] parts.
-#[test]
-fn the_runs_give_every_part_once_in_order() {
-    let mesh = |faces: usize| {
-        let v = (0..3 * faces)
-            .map(|i| Vec3::new(i as f32, (i % 3) as f32, -1.0 - (i % 2) as f32))
-            .collect::<Vec<_>>();
-        let f = (0..faces as u32).map(|t| [3 * t, 3 * t + 1, 3 * t + 2]).collect();
-        ShapeKind::from(Mesh::new(v, f).unwrap())
-    };
-    let sphere = || ShapeKind::from(Sphere::new(Vec3::new(0.0, 0.0, -5.0), 0.3).unwrap());
-    let shapes = [
-        vec![],
-        vec![sphere()],
-        vec![mesh(2 * RUN + 5)],
-        (0..RUN + 1).map(|_| sphere()).collect(),
-        vec![
-            sphere(),
-            mesh(3),
-            sphere(),
-            mesh(RUN),
-            mesh(RUN - 1),
-            sphere(),
-            mesh(7),
-        ],
-    ];
-    for shapes in shapes {
-        let objects: Vec<_> = shapes
-            .into_iter()
-            .map(|shape| Object { shape, material: () })
-            .collect();
-        let expected: Vec<Key> = (0..objects.len() as u32)
-            .flat_map(|o| (0..objects[o as usize].shape.parts()).map(move |p| (o, p)))
-            .collect();
-        let starts = runs(objects.iter().map(|o| o.shape.parts()));
-        let runs: Vec<Vec<Key>> = starts.iter().map(|&s| run(&objects, s).collect()).collect();
-        assert_eq!(runs.concat(), expected);
-        let (last, full) = runs.split_last().map_or((0, &[][..]), |(l, f)| (l.len(), f));
-        assert!(full.iter().all(|r| r.len() == RUN) && (1..=RUN).contains(&last) || expected.is_empty());
-    }
-}
-
 /// A material that only names its object, for telling which object a query found.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Tag(u32);
