@@ -3,7 +3,7 @@
 //!
 //! `cargo run --example scene_to_toml` regenerates the committed files; every `f64` is
 //! written in the shortest form that reads back to the same bits, so a scene built from
-//! its file renders the same image as the code (`tests/it/scene_files.rs` checks it).
+//! its file renders the same image as the code (`tests/files/scene_files.rs` checks it).
 
 mod scenes;
 

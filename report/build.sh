@@ -25,7 +25,7 @@
 # and, made by --figures:
 #   modules.csv, loc.csv         python3 report/tools/modules.py (module graph, line counts)
 #   speed.csv, speed_memory.csv  python3 report/tools/speed.py (interleaved timings)
-#   dispatch.csv                 cargo bench --bench render -- dispatch (criterion, enum vs dyn)
+#   dispatch.csv                 cargo bench -p raytrace-benches --bench render -- dispatch (criterion, enum vs dyn)
 #   tests.csv                    cargo test -- --list (tests per test target)
 #   tiles.csv                    the dragon in four tiles, merged, compared with the whole
 #
@@ -172,8 +172,8 @@ PY
     echo "== timings (report/tools/speed.py: interleaved runs of the examples)"
     "$VENV/bin/python" report/tools/speed.py --out "$DATA/speed.csv"
 
-    echo "== enum against trait objects (criterion: cargo bench --bench render -- dispatch)"
-    cargo bench --quiet --bench render -- dispatch --warm-up-time 1 --measurement-time 3 >/dev/null
+    echo "== enum against trait objects (criterion: cargo bench -p raytrace-benches --bench render -- dispatch)"
+    cargo bench --quiet -p raytrace-benches --bench render -- dispatch --warm-up-time 1 --measurement-time 3 >/dev/null
     "$VENV/bin/python" - "$DATA/dispatch.csv" <<'PY'
 import csv, glob, json, os, sys
 rows = []
@@ -210,10 +210,11 @@ for line in open(sys.argv[1], encoding="utf-8"):
         target = "doc-tests"
         continue
     if target and line.rstrip().endswith(": test"):
-        # The integration tests are one crate: count them by topic (top-level module).
+        # The integration tests are two crates: count them by topic (top-level module).
         key = target
-        if target.startswith("tests/it/"):
-            key = "tests/it/" + line.strip().split("::")[0]
+        m = re.match(r"tests/(it|files)/", target)
+        if m:
+            key = m.group(0) + line.strip().split("::")[0]
         counts[key] = counts.get(key, 0) + 1
 if not counts:
     sys.exit("tests.csv: no test listed (see " + sys.argv[1] + ")")

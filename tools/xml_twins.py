@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the XML twin of each scene file: scenes/NAME.toml -> scenes/NAME.xml, a Mitsuba 3
-scene that `raytrace render` renders to the same bytes (tests/it/xml_twins.rs proves it).
+scene that `raytrace render` renders to the same bytes (tests/files/xml_twins.rs proves it).
 
     python3 tools/xml_twins.py            # every scenes/*.toml
     python3 tools/xml_twins.py --check    # exit 1 if a twin is missing or out of date
@@ -374,7 +374,7 @@ def twin(toml_path: Path) -> str:
     comment = [line[1:].strip() for line in text.splitlines()
                if line.startswith("#") and "Written by" not in line]
     head = [f"The XML twin of {toml_path.name}: `raytrace render` renders both to the same bytes",
-            "(tests/it/xml_twins.rs). Written by tools/xml_twins.py; the `raytrace_` names are",
+            "(tests/files/xml_twins.rs). Written by tools/xml_twins.py; the `raytrace_` names are",
             "this renderer's extensions (docs/SCENE_FORMAT.md). The scene file says:", ""]
     body = "\n".join("     " + c if c else "" for c in head + comment).replace("--", "-")
     return f'<!--\n{body}\n-->\n<scene version="3.0.0">\n' + "\n".join(w.lines) + "\n</scene>\n"

@@ -1,7 +1,7 @@
 //! Image files: each format read exactly where it is exact, sRGB decoded on known pixels,
 //! and every bad file an `Error::Image` naming it, never a panic.
 
-use super::Scratch;
+use crate::common::Scratch;
 use image::{ImageBuffer, ImageFormat, Luma, Rgb, Rgba};
 use rand::{RngExt, SeedableRng};
 use raytrace::texture::{Bitmap, Decode};

@@ -1,7 +1,7 @@
 //! Scene files with textures, normal maps and mesh attributes: the documented example builds
 //! and shares its images; every mistake is an error at its key.
 
-use super::Scratch;
+use crate::common::Scratch;
 use image::{ImageBuffer, ImageFormat, Rgb};
 use raytrace::scene_file::SceneFile;
 use raytrace::texture::Texture;

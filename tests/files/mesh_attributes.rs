@@ -3,7 +3,7 @@
 //! scene file's mesh: normals placed as normals (perpendicular under any scale), `v`
 //! flipped as Mitsuba flips it by default, dropped with `face_normals`.
 
-use crate::textures::Scratch;
+use crate::common::Scratch;
 use raytrace::mesh::{MeshData, load};
 use raytrace::scene_file::SceneFile;
 use raytrace::{Error, ShapeKind, Vec3};

@@ -4,7 +4,7 @@
 //! its domain (in `f64`, or only once rounded to `f32`), a PLY file, and a `[materials]`
 //! entry named `mtl`.
 
-use crate::textures::Scratch;
+use crate::common::Scratch;
 use raytrace::scene_file::SceneFile;
 
 const MESH: &str = "[[objects]]\ntype = \"mesh\"\nfile = \"m.obj\"\nmaterial = \"mtl\"\n";

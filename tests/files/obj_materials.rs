@@ -14,7 +14,7 @@
 //!
 //! The mistakes, each an error naming the file and line, are in `obj_material_errors.rs`.
 
-use crate::textures::Scratch;
+use crate::common::Scratch;
 use raytrace::scene_file::{Built, SceneFile};
 use raytrace::{MaterialKind, render};
 use std::f64::consts::PI;

@@ -12,9 +12,11 @@
 pub mod bsdf;
 mod chi2;
 pub mod draws;
+mod scratch;
 pub mod sphere_chi2;
 
 pub use chi2::*;
+pub use scratch::Scratch;
 
 use proptest::prelude::*;
 use proptest::test_runner::{FileFailurePersistence, RngSeed, TestRunner};
