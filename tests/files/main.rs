@@ -1,6 +1,6 @@
-//! The integration tests of what goes in and out: scene files, meshes and textures on disk,
-//! imported glTF and Mitsuba scenes, the `raytrace` binary's command line, outputs and
-//! signals. A module per topic; `cargo test --test files topic::` runs one.
+//! The integration tests of what goes in and out: scene files and meshes on disk, imported
+//! glTF and Mitsuba scenes, the `raytrace` binary's command line, outputs and signals. A
+//! module per topic; `cargo test --test files topic::` runs one.
 //!
 //! The renderer's own tests are the other crate, `tests/it`; why two, its root says.
 
