@@ -17,9 +17,9 @@ use std::sync::Arc;
 /// a wrapped material), behind an `Arc`, shared by every object that uses them, so a scene
 /// of the spec's materials keeps its small objects (and the enum is `Clone`, not `Copy`: a
 /// matte surface's albedo may be a texture).
-// A tag of its own: without one the kind sits in a niche of the emitter's `two_sided` flag
-// and each `match` a hit decodes it with five more instructions. It costs 4–8 bytes a
-// material in the scene's table, none an object.
+// A tag of its own: without one, in f64 the kind sits in a niche of the emitter's
+// `two_sided` flag and each `match` a hit decodes it with five more instructions. It costs
+// a few bytes a material in the scene's table, none an object.
 #[derive(Clone, Debug, PartialEq)]
 #[repr(u32)]
 pub enum MaterialKind<F> {
