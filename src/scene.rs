@@ -316,6 +316,19 @@ impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
     pub fn occluded(&self, ray: &Ray<F>, t_max: F) -> bool {
         self.index().occluded(&self.objects, ray, t_max)
     }
+
+    /// [`Scene::occluded`] of each of `rays` in `(0, reach[i])`, set in `blocked`: the same
+    /// answers, found for the whole batch at once (`near` is scratch space).
+    pub(crate) fn occluded_all(
+        &self,
+        rays: &[Ray<F>],
+        reach: &[F],
+        near: &mut Nearests<F>,
+        blocked: &mut Vec<bool>,
+    ) {
+        self.index()
+            .occluded_all(&self.objects, rays, reach, near, blocked);
+    }
 }
 
 impl<F: Float, S: Layout<F>, M: Material<F>> Scene<F, S, M> {

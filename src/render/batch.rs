@@ -14,11 +14,14 @@
 //!   the recursion's own arithmetic, in its own order, for each path;
 //! - each ray travels with the state the recursion passes down with it (how it left its
 //!   last vertex, for the weight of the emitted light it finds);
+//! - each bounce's light sample waits for its shadow ray, and the shadow rays of a
+//!   bounce are traced together, like its rays; what arrives is added where the
+//!   recursion adds it, before the bounce's light is logged;
 //! - each pixel's samples are summed in the reference's order, sample 0 first.
 
 use super::RenderSettings;
 use super::reference::{camera_ray, mean, pixel_stream, sample_rng};
-use super::trace::{Arrival, Step, Tracer, saturate};
+use super::trace::{Arrival, Shadow, Step, Tracer, saturate};
 use crate::camera::Camera;
 use crate::float::Float;
 use crate::material::Scatter;
@@ -37,6 +40,15 @@ struct Bounce<F> {
     direct: Color<F>,
     /// The sample's weight.
     weight: Color<F>,
+}
+
+/// Where a light sample's light goes once its shadow ray is traced.
+#[derive(Clone, Copy)]
+enum Waiting {
+    /// To the bounce at this place in the depth's log.
+    Bounce(u32),
+    /// To the path's colour at its end: the pixel's.
+    End(u32),
 }
 
 /// The buffers of one band's paths, kept from band to band.
@@ -60,6 +72,12 @@ pub(super) struct Batch<F, R> {
     logs: Vec<Vec<Bounce<F>>>,
     /// Each path's colour where it ended (background, black, or its last direct light).
     ends: Vec<Color<F>>,
+    /// A depth's light samples waiting on their shadow rays, their rays and reaches, and
+    /// which of the rays are blocked.
+    shadows: Vec<(Waiting, Shadow<F>)>,
+    shadow_rays: Vec<Ray<F>>,
+    reaches: Vec<F>,
+    blocked: Vec<bool>,
     /// The bounces the last trace took (the logs beyond are stale).
     depth: usize,
     /// For [`Batch::trace_samples`] only: each path's bounces.
@@ -82,6 +100,10 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             near: Nearests::default(),
             logs: Vec::new(),
             ends: Vec::new(),
+            shadows: Vec::new(),
+            shadow_rays: Vec::new(),
+            reaches: Vec::new(),
+            blocked: Vec::new(),
             depth: 0,
             bounces: Vec::new(),
         }
@@ -197,6 +219,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             self.next_rays.clear();
             self.next_pixels.clear();
             self.next_arrivals.clear();
+            self.shadows.clear();
             // Each ray is shaded as soon as its hit is known, in the rays' order. Inlined
             // whatever its size: called, it takes the hit through memory.
             let (rays, pixels, arrivals) = (&self.rays, &self.pixels, &self.arrivals);
@@ -209,12 +232,22 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
                     let rng = &mut self.rngs[pixel as usize];
                     match tracer.shade(&rays[i], hit, depth as u32, arrivals[i], rng) {
                         Step::Done(colour) => self.ends[pixel as usize] = colour,
+                        Step::Lit(direct) => match tracer.take_shadow() {
+                            None => self.ends[pixel as usize] = saturate(direct),
+                            Some(s) => {
+                                self.ends[pixel as usize] = direct;
+                                self.shadows.push((Waiting::End(pixel), s));
+                            }
+                        },
                         Step::Go {
                             ray,
                             direct,
                             weight,
                             arrival,
                         } => {
+                            if let Some(s) = tracer.take_shadow() {
+                                self.shadows.push((Waiting::Bounce(log.len() as u32), s));
+                            }
                             log.push(Bounce {
                                 pixel,
                                 direct,
@@ -227,6 +260,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
                     }
                 },
             );
+            self.trace_shadows(tracer, depth);
             std::mem::swap(&mut self.rays, &mut self.next_rays);
             std::mem::swap(&mut self.pixels, &mut self.next_pixels);
             std::mem::swap(&mut self.arrivals, &mut self.next_arrivals);
@@ -239,6 +273,41 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             for b in log {
                 let end = &mut self.ends[b.pixel as usize];
                 *end = saturate(b.direct + b.weight * *end);
+            }
+        }
+    }
+
+    /// Traces the shadow rays of the light samples the bounces at `depth` wait on, and
+    /// adds the light of each that arrives to its bounce's logged light, or to the colour
+    /// of the path that ended there (then saturated, as the recursion's end is).
+    fn trace_shadows<S, M>(&mut self, tracer: &Tracer<'_, F, S, M>, depth: usize)
+    where
+        S: Layout<F>,
+        M: Scatter<F, R>,
+    {
+        if self.shadows.is_empty() {
+            return;
+        }
+        self.shadow_rays.clear();
+        self.reaches.clear();
+        for (_, s) in &self.shadows {
+            self.shadow_rays.push(s.ray);
+            self.reaches.push(s.reach);
+        }
+        let (rays, reaches) = (&self.shadow_rays, &self.reaches);
+        tracer
+            .scene
+            .occluded_all(rays, reaches, &mut self.near, &mut self.blocked);
+        for (&(waiting, s), &blocked) in self.shadows.iter().zip(&self.blocked) {
+            match waiting {
+                Waiting::Bounce(k) => {
+                    let bounce = &mut self.logs[depth][k as usize];
+                    bounce.direct = s.add_to(bounce.direct, blocked);
+                }
+                Waiting::End(pixel) => {
+                    let end = &mut self.ends[pixel as usize];
+                    *end = saturate(s.add_to(*end, blocked));
+                }
             }
         }
     }

@@ -2,7 +2,7 @@
 //! directional), and from one sampled emitter (next-event estimation), each through the
 //! material's [`eval`](Material::eval).
 
-use super::trace::Tracer;
+use super::trace::{Shadow, Tracer};
 use crate::float::Float;
 use crate::light::{Emitters, Incident, power_heuristic};
 use crate::material::{Lobes, Material};
@@ -76,7 +76,8 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     /// drawn with density `p_ω` per solid angle ([`Hittable::sample`](crate::Hittable::sample),
     /// [`Background::sample`](crate::Background::sample)), and `p_s` the material's
     /// [`pdf`](Material::pdf) of that direction; 0 if a shadow ray finds anything in
-    /// between, or an emitter shows the hit its back.
+    /// between, or an emitter shows the hit its back. The shadow ray is returned with the
+    /// light, to be traced later ([`Shadow`]); `None` where no light can arrive.
     ///
     /// Always draws four numbers (one to choose, three for the point), so the random
     /// stream does not depend on decisions f32 and f64 may take differently.
@@ -87,7 +88,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         wo: Vec3<F>,
         emitters: &Emitters,
         rng: &mut R,
-    ) -> Color<F>
+    ) -> Option<Shadow<F>>
     where
         R: Rng + ?Sized,
         B: Material<F> + ?Sized,
@@ -100,43 +101,33 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         // The same `choice` as without a background (`sky = 0`): `(c − 0)/(1 − 0) = c`.
         let (index, chosen) = emitters.choose((choice - self.sky) / (1.0 - self.sky));
         let object = &self.scene.objects()[index];
-        let Some(emission) = self.scene.material(object.material).emits() else {
-            return Color::zero();
-        };
+        let emission = self.scene.material(object.material).emits()?;
         let above = hit.offset_origin(hit.normal);
-        let Some(sample) = object.shape.sample(above, u) else {
-            return Color::zero();
-        };
+        let sample = object.shape.sample(above, u)?;
         let transmits = material.lobes().contains(Lobes::TRANSMISSION);
         let aim = |x| crate::light::aim(x, sample.point).map(|(dir, _)| dir);
-        let Some((origin, dir)) = toward(&hit, above, transmits, aim, |&dir| dir) else {
-            return Color::zero();
-        };
+        let (origin, dir) = toward(&hit, above, transmits, aim, |&dir| dir)?;
         let radiance = emission.toward(dir.dot(sample.normal) < F::zero());
         let light_pdf = F::from_f64((1.0 - self.sky) * chosen) * sample.pdf;
         if radiance == Color::zero() || !(light_pdf > F::zero() && light_pdf.is_finite()) {
-            return Color::zero();
+            return None;
         }
-        let Some(f) = hit
+        let f = hit
             .sides_agree(dir)
             .then(|| material.eval(&hit, wo, dir))
-            .flatten()
-        else {
-            return Color::zero();
-        };
+            .flatten()?;
         // The shadow ray stops where the scene's own intersection meets the emitter's part
         // (bit for bit the same `t`): the open interval `(0, t)` leaves the emitter out. A
         // direction that rounding takes just past the part's edge finds no light.
-        let shadow = Ray::new(origin, dir);
-        let Some(at) = object.shape.intersect_part(sample.part, &shadow, F::infinity()) else {
-            return Color::zero();
-        };
+        let ray = Ray::new(origin, dir);
+        let at = object.shape.intersect_part(sample.part, &ray, F::infinity())?;
         self.rays += 1;
-        if self.scene.occluded(&shadow, at.t) {
-            return Color::zero();
-        }
         let weight = power_heuristic(light_pdf, material.pdf(&hit, wo, dir));
-        f.colour * radiance * (f.scale * weight / light_pdf)
+        Some(Shadow {
+            ray,
+            reach: at.t,
+            light: f.colour * radiance * (f.scale * weight / light_pdf),
+        })
     }
 
     /// [`sample_light`](Self::sample_light)'s background branch: a direction drawn from the
@@ -148,11 +139,9 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         material: &B,
         wo: Vec3<F>,
         u: [f64; 2],
-    ) -> Color<F> {
+    ) -> Option<Shadow<F>> {
         let background = self.scene.background();
-        let Some((dir, pdf)) = background.sample(u) else {
-            return Color::zero();
-        };
+        let (dir, pdf) = background.sample(u)?;
         let light_pdf = F::from_f64(self.sky) * pdf;
         let transmits = material.lobes().contains(Lobes::TRANSMISSION);
         let origin = if dir.dot(hit.normal) >= F::zero() {
@@ -160,20 +149,19 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         } else if transmits {
             hit.offset_origin(dir)
         } else {
-            return Color::zero();
+            return None;
         };
         if !(light_pdf > F::zero() && light_pdf.is_finite() && hit.sides_agree(dir)) {
-            return Color::zero();
+            return None;
         }
-        let Some(f) = material.eval(hit, wo, dir) else {
-            return Color::zero();
-        };
+        let f = material.eval(hit, wo, dir)?;
         self.rays += 1;
-        if self.scene.occluded(&Ray::new(origin, dir), F::infinity()) {
-            return Color::zero();
-        }
         let weight = power_heuristic(light_pdf, material.pdf(hit, wo, dir));
-        f.colour * background.color(dir) * (f.scale * weight / light_pdf)
+        Some(Shadow {
+            ray: Ray::new(origin, dir),
+            reach: F::infinity(),
+            light: f.colour * background.color(dir) * (f.scale * weight / light_pdf),
+        })
     }
 }
 

@@ -24,17 +24,56 @@ pub(crate) fn saturate<F: Float>(c: Color<F>) -> Color<F> {
 pub(super) enum Step<F> {
     /// The path ends here with this colour.
     Done(Color<F>),
+    /// The path ends here with the light this bounce adds, `L_e + L_d`, saturated
+    /// ([`saturate`]): this, and the light sample's ([`Tracer::shadow`]) if its shadow ray
+    /// arrives.
+    Lit(Color<F>),
     /// The path goes on: the colour is `direct + weight ∘ (what ray brings back)`.
     Go {
         /// The next ray.
         ray: Ray<F>,
-        /// The light this bounce adds, `L_e + L_d`.
+        /// The light this bounce adds, `L_e + L_d`, but the light sample's
+        /// ([`Tracer::shadow`]), which adds to it if its shadow ray arrives.
         direct: Color<F>,
         /// The sample's weight, `f·|cos θ|/pdf` (the albedo, for the spec's materials).
         weight: Color<F>,
         /// How the next ray left this vertex.
         arrival: Arrival<F>,
     },
+}
+
+/// What the recursion does after a bounce: end with a colour, or combine the light the
+/// bounce adds with what the next ray brings back, `saturate(direct + weight ∘ …)`.
+enum Next<F> {
+    End(Color<F>),
+    Go {
+        ray: Ray<F>,
+        direct: Color<F>,
+        weight: Color<F>,
+        arrival: Arrival<F>,
+    },
+}
+
+/// A light sample's light, waiting on its shadow ray: it arrives unless something blocks
+/// `ray` in `(0, reach)`. The shading of a bounce does not wait for the answer, so that a
+/// batch of paths can trace its shadow rays together (`Scene::occluded_all`).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Shadow<F> {
+    /// The shadow ray.
+    pub(super) ray: Ray<F>,
+    /// Where the light is along it.
+    pub(super) reach: F,
+    /// The light that arrives if nothing blocks it.
+    pub(super) light: Color<F>,
+}
+
+impl<F: Float> Shadow<F> {
+    /// A bounce's `direct` light with this sample's added if its shadow ray arrives (is
+    /// not `blocked`).
+    #[inline]
+    pub(super) fn add_to(&self, direct: Color<F>, blocked: bool) -> Color<F> {
+        if blocked { direct } else { direct + self.light }
+    }
 }
 
 /// How a ray left the vertex before it: the per-path state the weight of the emitted
@@ -60,6 +99,10 @@ pub struct Tracer<'a, F, S, M> {
     /// it a light, [`Scene::set_background_sampled`]); an emitter otherwise.
     pub(super) sky: f64,
     pub(super) rays: u64,
+    /// The light sample of the bounce last shaded ([`Tracer::shade`]), if it took one that
+    /// can bring light; whoever shades takes it. Kept here, not in the [`Step`], so that
+    /// the steps of bounces that sample no light stay as small as they were.
+    pub(super) shadow: Option<Shadow<F>>,
 }
 
 impl<'a, F: Float, S: Layout<F>, M: Material<F>> Tracer<'a, F, S, M> {
@@ -84,6 +127,7 @@ impl<'a, F: Float, S: Layout<F>, M: Material<F>> Tracer<'a, F, S, M> {
             light_sampling: LightSampling::Mis,
             sky,
             rays: 0,
+            shadow: None,
         }
     }
 }
@@ -144,11 +188,9 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         R: Rng + ?Sized,
         M: Scatter<F, R>,
     {
-        self.rays += 1;
-        let hit = self.scene.hit_object(ray, F::infinity());
-        match self.shade(ray, hit, depth, arrival, rng) {
-            Step::Done(colour) => colour,
-            Step::Go {
+        match self.bounce(ray, depth, arrival, rng) {
+            Next::End(colour) => colour,
+            Next::Go {
                 ray,
                 direct,
                 weight,
@@ -157,10 +199,60 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         }
     }
 
+    /// One bounce of [`Tracer::trace_from`], its light sample's shadow ray traced. Out of
+    /// line, so that each level of the recursion keeps only what crosses it on the stack
+    /// ([`Next`]), not the shading's state: the deepest recursion allowed must fit on a
+    /// worker thread's stack.
+    #[inline(never)]
+    fn bounce<R>(&mut self, ray: &Ray<F>, depth: u32, arrival: Arrival<F>, rng: &mut R) -> Next<F>
+    where
+        R: Rng + ?Sized,
+        M: Scatter<F, R>,
+    {
+        self.rays += 1;
+        let hit = self.scene.hit_object(ray, F::infinity());
+        let step = self.shade(ray, hit, depth, arrival, rng);
+        let shadow = self.take_shadow();
+        match step {
+            Step::Done(colour) => Next::End(colour),
+            Step::Lit(direct) => Next::End(saturate(self.arrived(direct, shadow))),
+            Step::Go {
+                ray,
+                direct,
+                weight,
+                arrival,
+            } => Next::Go {
+                ray,
+                direct: self.arrived(direct, shadow),
+                weight,
+                arrival,
+            },
+        }
+    }
+
+    /// The light sample the bounce last shaded left ([`Tracer::shadow`]), taken. Looked at
+    /// before it is taken: most bounces leave none, and then nothing is written.
+    #[inline(always)]
+    pub(super) fn take_shadow(&mut self) -> Option<Shadow<F>> {
+        if self.shadow.is_some() {
+            self.shadow.take()
+        } else {
+            None
+        }
+    }
+
+    /// `direct` with the light `shadow` brings if its shadow ray arrives.
+    fn arrived(&self, direct: Color<F>, shadow: Option<Shadow<F>>) -> Color<F> {
+        match shadow {
+            Some(s) => s.add_to(direct, self.scene.occluded(&s.ray, s.reach)),
+            None => direct,
+        }
+    }
+
     /// What a ray's hit (or miss) does: a final colour, or the ray to trace next with the
     /// light this bounce adds (`L_e + L_d`) and the weight to combine with what it brings
-    /// back. Random numbers are drawn in one order: the light sample's four, then the
-    /// material's. Only the material's [`lobes`](crate::Material::lobes), [`eval`](crate::Material::eval),
+    /// back; a light sample's light waits on its shadow ray in [`Tracer::shadow`]. Random
+    /// numbers are drawn in one order: the light sample's four, then the material's. Only the material's [`lobes`](crate::Material::lobes), [`eval`](crate::Material::eval),
     /// [`pdf`](crate::Material::pdf), [`emits`](crate::Material::emits) and [`sample`](Scatter::sample)
     /// are asked, of the material it [resolves](Scatter::resolve) to at the hit, never what
     /// kind of material it is.
@@ -238,8 +330,9 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         }
         // A light sample here stands for a scattered ray meeting the light at depth + 1.
         let sampled = lit && self.samples_lights(emitters, depth);
+        debug_assert!(self.shadow.is_none(), "the last bounce's light sample was taken");
         if sampled {
-            direct = direct + self.sample_light(hit, material, wo, emitters, rng);
+            self.shadow = self.sample_light(hit, material, wo, emitters, rng);
         }
         match material.sample(&hit, wo, rng) {
             Some(s) if hit.sides_agree(s.direction) => Step::Go {
@@ -252,7 +345,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
                     Arrival::Unweighted
                 },
             },
-            _ => Step::Done(saturate(direct)),
+            _ => Step::Lit(direct),
         }
     }
 

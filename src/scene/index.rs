@@ -22,7 +22,7 @@ use crate::material::Material;
 use crate::ray::Ray;
 use crate::shape::{Coordinates, Hit, Intersection};
 pub(crate) use packet::Found;
-use packet::{Key, Looped, Packer, Packets, kind};
+use packet::{Key, Looped, Packer, Packet, Packets, kind};
 use rayon::prelude::*;
 use runs::{run, runs};
 
@@ -251,6 +251,49 @@ impl<F: Float> Index<F> {
                 .bvh
                 .as_ref()
                 .is_some_and(|bvh| bvh.any(ray, t_max, |k| self.leaves.get(k).any(objects, ray, t_max)))
+    }
+
+    /// [`Index::occluded`] of each of `rays` in `(0, reach[i])`, set in `blocked`: the same
+    /// answers, the tree walked by the whole batch at once. A ray found blocked stops: its
+    /// reach drops to `−∞`, which no box starts within.
+    pub(super) fn occluded_all<S: Layout<F>, M>(
+        &self,
+        objects: &[Object<S, M>],
+        rays: &[Ray<F>],
+        reach: &[F],
+        near: &mut Nearests<F>,
+        blocked: &mut Vec<bool>,
+    ) {
+        let gone = F::neg_infinity();
+        let Nearests { t, streams, .. } = near;
+        t.clear();
+        t.extend_from_slice(reach);
+        let any = |p: Packet<'_, F>, r: usize, t: &mut [F]| {
+            if t[r] != gone && p.any(objects, &rays[r], t[r]) {
+                t[r] = gone;
+            }
+        };
+        for r in 0..rays.len() {
+            if self.plain {
+                if plain::any(objects, &rays[r], t[r]) {
+                    t[r] = gone;
+                }
+                continue;
+            }
+            for p in &self.looped {
+                any(p.packet(), r, t);
+            }
+        }
+        if let Some(bvh) = &self.bvh {
+            bvh.traverse_all(rays, t, streams, |k, reached, t| {
+                let leaf = self.leaves.get(k);
+                for &r in reached {
+                    any(leaf, r as usize, t);
+                }
+            });
+        }
+        blocked.clear();
+        blocked.extend(t.iter().map(|&t| t == gone));
     }
 }
 

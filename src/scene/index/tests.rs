@@ -156,7 +156,7 @@ fn tags<S>(objects: &[Object<S>]) -> Vec<Tag> {
 /// The batch answers exactly as one ray at a time: the same record and object, for
 /// rays from outside, from inside and from the surfaces, ties included. (It finds a
 /// mismatch if a batch loop skips an object, tests a packet with the wrong ray, or
-/// breaks ties the other way.)
+/// breaks ties the other way.) So does the batch's occlusion query.
 #[test]
 fn a_batch_answers_like_single_rays() {
     use rand::{RngExt, SeedableRng};
@@ -202,6 +202,22 @@ fn a_batch_answers_like_single_rays() {
             hits += usize::from(want.is_some());
         }
         assert!(hits > rays.len() / 2, "most rays should hit something ({hits})");
+        // Occlusion of the whole batch, each ray to its own reach.
+        let reach: Vec<f64> = (0..rays.len())
+            .map(|i| [1.0, 5.0, 12.0, f64::INFINITY][i % 4])
+            .collect();
+        let mut blocked = Vec::new();
+        index.occluded_all(&objects, &rays, &reach, &mut near, &mut blocked);
+        assert_eq!(blocked.len(), rays.len());
+        for ((ray, &t_max), &got) in rays.iter().zip(&reach).zip(&blocked) {
+            assert_eq!(got, index.occluded(&objects, ray, t_max), "{ray:?} to {t_max}");
+        }
+        let count = blocked.iter().filter(|&&b| b).count();
+        assert!(
+            count > rays.len() / 4 && count < rays.len() * 3 / 4,
+            "{count} of {} blocked",
+            rays.len()
+        );
     }
 }
 
