@@ -14,14 +14,14 @@
 //!   the recursion's own arithmetic, in its own order, for each path;
 //! - each ray travels with the state the recursion passes down with it (how it left its
 //!   last vertex, for the weight of the emitted light it finds);
-//! - each bounce's light sample waits for its shadow ray, and the shadow rays of a
-//!   bounce are traced together, like its rays; what arrives is added where the
-//!   recursion adds it, before the bounce's light is logged;
+//! - where there is a tree to walk, each bounce's shadow rays wait, and those of a depth
+//!   are traced together, as its rays are; the light that arrives is added as the
+//!   recursion adds it, before the bounce's light is folded;
 //! - each pixel's samples are summed in the reference's order, sample 0 first.
 
 use super::RenderSettings;
 use super::reference::{camera_ray, mean, pixel_stream, sample_rng};
-use super::trace::{Arrival, Shadow, Step, Tracer, saturate};
+use super::trace::{Arrival, Shadow, Step, Tracer, arrive, saturate};
 use crate::camera::Camera;
 use crate::float::Float;
 use crate::material::Scatter;
@@ -72,9 +72,11 @@ pub(super) struct Batch<F, R> {
     logs: Vec<Vec<Bounce<F>>>,
     /// Each path's colour where it ended (background, black, or its last direct light).
     ends: Vec<Color<F>>,
-    /// A depth's light samples waiting on their shadow rays, their rays and reaches, and
-    /// which of the rays are blocked.
-    shadows: Vec<(Waiting, Shadow<F>)>,
+    /// A depth's shadow rays waiting to be traced, with their light: for each bounce that
+    /// left some, where the light goes and how many of `shadows` are its (in order); their
+    /// rays and reaches, and which of the rays are blocked.
+    waiting: Vec<(Waiting, u32)>,
+    shadows: Vec<Shadow<F>>,
     shadow_rays: Vec<Ray<F>>,
     reaches: Vec<F>,
     blocked: Vec<bool>,
@@ -100,6 +102,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             near: Nearests::default(),
             logs: Vec::new(),
             ends: Vec::new(),
+            waiting: Vec::new(),
             shadows: Vec::new(),
             shadow_rays: Vec::new(),
             reaches: Vec::new(),
@@ -208,6 +211,8 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         self.ends.clear();
         self.ends.resize(self.rays.len(), Color::zero());
         let scene = tracer.scene;
+        // Where there is a tree, a depth's shadow rays are walked down it together.
+        tracer.defer = scene.uses_bvh();
         let mut depth = 0;
         while !self.rays.is_empty() {
             if self.logs.len() == depth {
@@ -219,6 +224,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             self.next_rays.clear();
             self.next_pixels.clear();
             self.next_arrivals.clear();
+            self.waiting.clear();
             self.shadows.clear();
             // Each ray is shaded as soon as its hit is known, in the rays' order. Inlined
             // whatever its size: called, it takes the hit through memory.
@@ -232,21 +238,25 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
                     let rng = &mut self.rngs[pixel as usize];
                     match tracer.shade(&rays[i], hit, depth as u32, arrivals[i], rng) {
                         Step::Done(colour) => self.ends[pixel as usize] = colour,
-                        Step::Lit(direct) => match tracer.take_shadow() {
-                            None => self.ends[pixel as usize] = saturate(direct),
-                            Some(s) => {
-                                self.ends[pixel as usize] = direct;
-                                self.shadows.push((Waiting::End(pixel), s));
-                            }
-                        },
+                        Step::Lit(direct) if tracer.shadows.is_empty() => {
+                            self.ends[pixel as usize] = saturate(direct);
+                        }
+                        Step::Lit(direct) => {
+                            self.ends[pixel as usize] = direct;
+                            let n = tracer.shadows.len() as u32;
+                            self.waiting.push((Waiting::End(pixel), n));
+                            self.shadows.append(&mut tracer.shadows);
+                        }
                         Step::Go {
                             ray,
                             direct,
                             weight,
                             arrival,
                         } => {
-                            if let Some(s) = tracer.take_shadow() {
-                                self.shadows.push((Waiting::Bounce(log.len() as u32), s));
+                            if !tracer.shadows.is_empty() {
+                                let n = tracer.shadows.len() as u32;
+                                self.waiting.push((Waiting::Bounce(log.len() as u32), n));
+                                self.shadows.append(&mut tracer.shadows);
                             }
                             log.push(Bounce {
                                 pixel,
@@ -267,6 +277,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             depth += 1;
         }
         self.depth = depth;
+        tracer.defer = false;
         // Each path's bounces fold back from its last: bounce by bounce from the deepest,
         // each entry updating its path's colour.
         for log in self.logs[..depth].iter().rev() {
@@ -277,9 +288,9 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         }
     }
 
-    /// Traces the shadow rays of the light samples the bounces at `depth` wait on, and
-    /// adds the light of each that arrives to its bounce's logged light, or to the colour
-    /// of the path that ended there (then saturated, as the recursion's end is).
+    /// Traces the shadow rays the bounces at `depth` left waiting, and adds the light of
+    /// those that arrive to their bounce's logged light ([`arrive`]), or to the colour of
+    /// the path that ended there (then saturated, as the recursion's end is).
     fn trace_shadows<S, M>(&mut self, tracer: &Tracer<'_, F, S, M>, depth: usize)
     where
         S: Layout<F>,
@@ -290,7 +301,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         }
         self.shadow_rays.clear();
         self.reaches.clear();
-        for (_, s) in &self.shadows {
+        for s in &self.shadows {
             self.shadow_rays.push(s.ray);
             self.reaches.push(s.reach);
         }
@@ -298,15 +309,20 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         tracer
             .scene
             .occluded_all(rays, reaches, &mut self.near, &mut self.blocked);
-        for (&(waiting, s), &blocked) in self.shadows.iter().zip(&self.blocked) {
+        let mut start = 0;
+        for &(waiting, n) in &self.waiting {
+            let range = start..start + n as usize;
+            start = range.end;
+            let (shadows, blocked) = (&self.shadows[range.clone()], &self.blocked[range]);
+            let arrived = |direct| arrive(direct, shadows, |i| blocked[i]);
             match waiting {
                 Waiting::Bounce(k) => {
                     let bounce = &mut self.logs[depth][k as usize];
-                    bounce.direct = s.add_to(bounce.direct, blocked);
+                    bounce.direct = arrived(bounce.direct);
                 }
                 Waiting::End(pixel) => {
                     let end = &mut self.ends[pixel as usize];
-                    *end = saturate(s.add_to(*end, blocked));
+                    *end = saturate(arrived(*end));
                 }
             }
         }

@@ -19,7 +19,8 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
     /// light's [`Incident`] giving `wi`, the shadow ray's length and `I/d²` (`E/1` for a
     /// light at infinity), computed as `(colour ∘ I)·(scale/d²)` from the material's
     /// [`Eval`](crate::material::Eval) (for the Lambertian `(A/π ∘ I)·(cos θ/d²)`, the
-    /// specification's extra).
+    /// specification's extra). With [`Tracer::defer`] each light's shadow ray waits in
+    /// [`Tracer::shadows`] instead, with its term, and the sum is 0.
     pub(super) fn direct_light<B: Material<F> + ?Sized>(
         &mut self,
         hit: &Hit<F>,
@@ -58,8 +59,17 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
                 continue;
             };
             self.rays += 1;
-            if !self.scene.occluded(&Ray::new(origin, dir), distance) {
-                sum = sum + f.colour * intensity * (f.scale / falloff);
+            let ray = Ray::new(origin, dir);
+            let light = f.colour * intensity * (f.scale / falloff);
+            if self.defer {
+                self.shadows.push(Shadow {
+                    ray,
+                    reach: distance,
+                    light,
+                    sampled: false,
+                });
+            } else if !self.scene.occluded(&ray, distance) {
+                sum = sum + light;
             }
         }
         sum
@@ -127,6 +137,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
             ray,
             reach: at.t,
             light: f.colour * radiance * (f.scale * weight / light_pdf),
+            sampled: true,
         })
     }
 
@@ -161,6 +172,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
             ray: Ray::new(origin, dir),
             reach: F::infinity(),
             light: f.colour * background.color(dir) * (f.scale * weight / light_pdf),
+            sampled: true,
         })
     }
 }

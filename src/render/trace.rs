@@ -25,15 +25,15 @@ pub(super) enum Step<F> {
     /// The path ends here with this colour.
     Done(Color<F>),
     /// The path ends here with the light this bounce adds, `L_e + L_d`, saturated
-    /// ([`saturate`]): this, and the light sample's ([`Tracer::shadow`]) if its shadow ray
-    /// arrives.
+    /// ([`saturate`]): this, and the light of the shadow rays left waiting in
+    /// [`Tracer::shadows`] that arrive.
     Lit(Color<F>),
     /// The path goes on: the colour is `direct + weight ∘ (what ray brings back)`.
     Go {
         /// The next ray.
         ray: Ray<F>,
-        /// The light this bounce adds, `L_e + L_d`, but the light sample's
-        /// ([`Tracer::shadow`]), which adds to it if its shadow ray arrives.
+        /// The light this bounce adds, `L_e + L_d`, but that of the shadow rays left
+        /// waiting in [`Tracer::shadows`], which adds to it where they arrive.
         direct: Color<F>,
         /// The sample's weight, `f·|cos θ|/pdf` (the albedo, for the spec's materials).
         weight: Color<F>,
@@ -54,9 +54,10 @@ enum Next<F> {
     },
 }
 
-/// A light sample's light, waiting on its shadow ray: it arrives unless something blocks
-/// `ray` in `(0, reach)`. The shading of a bounce does not wait for the answer, so that a
-/// batch of paths can trace its shadow rays together (`Scene::occluded_all`).
+/// A light's contribution at a bounce, waiting on its shadow ray: it arrives unless
+/// something blocks `ray` in `(0, reach)`. Where the batch walks a tree, shading does not
+/// wait for the answer, so that the shadow rays of many paths are traced together
+/// (`Scene::occluded_all`), as their rays are.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Shadow<F> {
     /// The shadow ray.
@@ -65,15 +66,29 @@ pub(super) struct Shadow<F> {
     pub(super) reach: F,
     /// The light that arrives if nothing blocks it.
     pub(super) light: Color<F>,
+    /// Whether it is the light sample's (of an emitter or the background), not a delta
+    /// light's (point, spot, directional).
+    pub(super) sampled: bool,
 }
 
-impl<F: Float> Shadow<F> {
-    /// A bounce's `direct` light with this sample's added if its shadow ray arrives (is
-    /// not `blocked`).
-    #[inline]
-    pub(super) fn add_to(&self, direct: Color<F>, blocked: bool) -> Color<F> {
-        if blocked { direct } else { direct + self.light }
+/// `direct` with the light of a bounce's `shadows` whose rays arrive (`blocked(i)` false
+/// for `shadows[i]`), added as [`Tracer::shade`] adds them when it traces each at once: the
+/// delta lights' sum, then the light sample's.
+pub(super) fn arrive<F: Float>(
+    direct: Color<F>,
+    shadows: &[Shadow<F>],
+    blocked: impl Fn(usize) -> bool,
+) -> Color<F> {
+    let (mut sum, mut sample) = (None, None);
+    for (i, s) in shadows.iter().enumerate() {
+        match (blocked(i), s.sampled) {
+            (true, _) => {}
+            (false, true) => sample = Some(s.light),
+            (false, false) => sum = Some(sum.map_or(s.light, |sum| sum + s.light)),
+        }
     }
+    let direct = sum.map_or(direct, |sum| sum + direct);
+    sample.map_or(direct, |light| direct + light)
 }
 
 /// How a ray left the vertex before it: the per-path state the weight of the emitted
@@ -99,10 +114,13 @@ pub struct Tracer<'a, F, S, M> {
     /// it a light, [`Scene::set_background_sampled`]); an emitter otherwise.
     pub(super) sky: f64,
     pub(super) rays: u64,
-    /// The light sample of the bounce last shaded ([`Tracer::shade`]), if it took one that
-    /// can bring light; whoever shades takes it. Kept here, not in the [`Step`], so that
-    /// the steps of bounces that sample no light stay as small as they were.
-    pub(super) shadow: Option<Shadow<F>>,
+    /// Whether shading leaves its shadow rays waiting in [`Tracer::shadows`] (the batch's
+    /// choice where it walks a tree) rather than tracing each at once.
+    pub(super) defer: bool,
+    /// The shadow rays the bounce last shaded ([`Tracer::shade`]) left waiting, with the
+    /// light each brings; whoever shades empties it. Kept here, not in the [`Step`], so
+    /// that the steps stay as small as they were.
+    pub(super) shadows: Vec<Shadow<F>>,
 }
 
 impl<'a, F: Float, S: Layout<F>, M: Material<F>> Tracer<'a, F, S, M> {
@@ -127,7 +145,8 @@ impl<'a, F: Float, S: Layout<F>, M: Material<F>> Tracer<'a, F, S, M> {
             light_sampling: LightSampling::Mis,
             sky,
             rays: 0,
-            shadow: None,
+            defer: false,
+            shadows: Vec::new(),
         }
     }
 }
@@ -199,7 +218,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         }
     }
 
-    /// One bounce of [`Tracer::trace_from`], its light sample's shadow ray traced. Out of
+    /// One bounce of [`Tracer::trace_from`], any shadow rays it left waiting traced. Out of
     /// line, so that each level of the recursion keeps only what crosses it on the stack
     /// ([`Next`]), not the shading's state: the deepest recursion allowed must fit on a
     /// worker thread's stack.
@@ -212,10 +231,9 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         self.rays += 1;
         let hit = self.scene.hit_object(ray, F::infinity());
         let step = self.shade(ray, hit, depth, arrival, rng);
-        let shadow = self.take_shadow();
         match step {
             Step::Done(colour) => Next::End(colour),
-            Step::Lit(direct) => Next::End(saturate(self.arrived(direct, shadow))),
+            Step::Lit(direct) => Next::End(saturate(self.arrived(direct))),
             Step::Go {
                 ray,
                 direct,
@@ -223,35 +241,32 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
                 arrival,
             } => Next::Go {
                 ray,
-                direct: self.arrived(direct, shadow),
+                direct: self.arrived(direct),
                 weight,
                 arrival,
             },
         }
     }
 
-    /// The light sample the bounce last shaded left ([`Tracer::shadow`]), taken. Looked at
-    /// before it is taken: most bounces leave none, and then nothing is written.
-    #[inline(always)]
-    pub(super) fn take_shadow(&mut self) -> Option<Shadow<F>> {
-        if self.shadow.is_some() {
-            self.shadow.take()
-        } else {
-            None
+    /// `direct` with the light of the shadow rays left waiting ([`Tracer::shadows`]) that
+    /// arrive, each traced now; none wait unless [`Tracer::defer`] is set.
+    fn arrived(&mut self, direct: Color<F>) -> Color<F> {
+        if self.shadows.is_empty() {
+            return direct;
         }
-    }
-
-    /// `direct` with the light `shadow` brings if its shadow ray arrives.
-    fn arrived(&self, direct: Color<F>, shadow: Option<Shadow<F>>) -> Color<F> {
-        match shadow {
-            Some(s) => s.add_to(direct, self.scene.occluded(&s.ray, s.reach)),
-            None => direct,
-        }
+        let scene = self.scene;
+        let shadows = &self.shadows;
+        let direct = arrive(direct, shadows, |i| {
+            scene.occluded(&shadows[i].ray, shadows[i].reach)
+        });
+        self.shadows.clear();
+        direct
     }
 
     /// What a ray's hit (or miss) does: a final colour, or the ray to trace next with the
     /// light this bounce adds (`L_e + L_d`) and the weight to combine with what it brings
-    /// back; a light sample's light waits on its shadow ray in [`Tracer::shadow`]. Random
+    /// back; with [`Tracer::defer`], the light of every shadow ray waits in
+    /// [`Tracer::shadows`]. Random
     /// numbers are drawn in one order: the light sample's four, then the material's. Only the material's [`lobes`](crate::Material::lobes), [`eval`](crate::Material::eval),
     /// [`pdf`](crate::Material::pdf), [`emits`](crate::Material::emits) and [`sample`](Scatter::sample)
     /// are asked, of the material it [resolves](Scatter::resolve) to at the hit, never what
@@ -330,9 +345,12 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         }
         // A light sample here stands for a scattered ray meeting the light at depth + 1.
         let sampled = lit && self.samples_lights(emitters, depth);
-        debug_assert!(self.shadow.is_none(), "the last bounce's light sample was taken");
-        if sampled {
-            self.shadow = self.sample_light(hit, material, wo, emitters, rng);
+        if sampled && let Some(s) = self.sample_light(hit, material, wo, emitters, rng) {
+            if self.defer {
+                self.shadows.push(s);
+            } else if !self.scene.occluded(&s.ray, s.reach) {
+                direct = direct + s.light;
+            }
         }
         match material.sample(&hit, wo, rng) {
             Some(s) if hit.sides_agree(s.direction) => Step::Go {

@@ -1,7 +1,8 @@
 //! The fast renderer gives the reference renderer's bytes: every example scene (the
 //! `custom_shape` example's user shape and material among them), a scene of meshes on the
-//! BVH, and two scenes lit by emitting surfaces (the Cornell box, and spheres, a triangle and
-//! a plane giving off light beside a point light, mirror and glass), in f32 and f64, through
+//! BVH, and scenes lit by emitting surfaces (the Cornell box, and spheres, a triangle and
+//! a plane giving off light beside a point light, mirror and glass, also on a BVH with a
+//! second point light), in f32 and f64, through
 //! both dispatch paths, at 1, 2 and 3 samples per pixel, on 1 and 2 threads, with emitters
 //! sampled or not, whole and in tiles. The reference renderer calls the spec's recursive
 //! `trace` once per sample, so this is the test that the batched, parallel renderer renders
@@ -43,12 +44,23 @@ fn examples<F: Float>() -> Vec<(&'static str, Built<F>)> {
 }
 
 /// The scenes lit by emitting surfaces, small: the Cornell box from its scene file, and
-/// spheres, a triangle and a plane giving off light.
+/// spheres, a triangle and a plane giving off light; the latter again on a BVH with a
+/// second point light, where the fast renderer traces the shadow rays of the point lights
+/// and of the light sample of many paths together and adds their light afterwards.
 fn emissive<F: Float>() -> Vec<(&'static str, Built<F>)> {
     let (cornell, camera, _) = scenes::cornell_box::<F>(20).unwrap();
+    let mut lit_tree = scenes::area_lights::<F>().unwrap();
+    let v = |x, y, z| Vec3::<F>::from_f64(x, y, z);
+    lit_tree.add_light(PointLight::new(v(-2.0, 2.5, -1.5), v(2.0, 3.0, 1.0)).unwrap());
+    lit_tree.set_acceleration(raytrace::Acceleration::Bvh);
+    assert!(lit_tree.uses_bvh());
     vec![
         ("cornell_box", (cornell, Box::new(camera))),
         ("area_lights", spec_camera(scenes::area_lights())),
+        (
+            "area_lights on a BVH, two point lights",
+            spec_camera(Ok(lit_tree)),
+        ),
     ]
 }
 
