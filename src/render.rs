@@ -15,7 +15,9 @@ mod progress;
 mod reference;
 mod seed;
 mod settings;
+mod shadow;
 mod trace;
+mod weights;
 
 pub use crate::image::Rect;
 pub use adaptive::{Adaptive, Convergence};

@@ -21,7 +21,8 @@
 
 use super::RenderSettings;
 use super::reference::{camera_ray, mean, pixel_stream, sample_rng};
-use super::trace::{Arrival, Shadow, Step, Tracer, arrive, saturate};
+use super::shadow::{Shadow, arrive};
+use super::trace::{Arrival, Step, Tracer, saturate};
 use crate::camera::Camera;
 use crate::float::Float;
 use crate::material::Scatter;
@@ -42,7 +43,7 @@ struct Bounce<F> {
     weight: Color<F>,
 }
 
-/// Where a light sample's light goes once its shadow ray is traced.
+/// Where the light of a bounce's waiting shadow rays goes once they are traced.
 #[derive(Clone, Copy)]
 enum Waiting {
     /// To the bounce at this place in the depth's log.

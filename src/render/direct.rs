@@ -2,7 +2,8 @@
 //! directional), and from one sampled emitter (next-event estimation), each through the
 //! material's [`eval`](Material::eval).
 
-use super::trace::{Shadow, Tracer};
+use super::shadow::Shadow;
+use super::trace::Tracer;
 use crate::float::Float;
 use crate::light::{Emitters, Incident, power_heuristic};
 use crate::material::{Lobes, Material};

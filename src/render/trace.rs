@@ -1,9 +1,10 @@
 //! The specification's recursive trace: what one ray brings back.
 
 use super::settings::LightSampling;
+use super::shadow::{Shadow, arrive};
 use crate::float::Float;
-use crate::light::{Emitters, power_heuristic};
-use crate::material::{BsdfVisitor, Emission, Material, Scatter};
+use crate::light::Emitters;
+use crate::material::{BsdfVisitor, Material, Scatter};
 use crate::ray::Ray;
 use crate::scene::{HitOn, Layout, Object, Scene};
 use crate::shape::Hit;
@@ -54,43 +55,6 @@ enum Next<F> {
     },
 }
 
-/// A light's contribution at a bounce, waiting on its shadow ray: it arrives unless
-/// something blocks `ray` in `(0, reach)`. Where the batch walks a tree, shading does not
-/// wait for the answer, so that the shadow rays of many paths are traced together
-/// (`Scene::occluded_all`), as their rays are.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Shadow<F> {
-    /// The shadow ray.
-    pub(super) ray: Ray<F>,
-    /// Where the light is along it.
-    pub(super) reach: F,
-    /// The light that arrives if nothing blocks it.
-    pub(super) light: Color<F>,
-    /// Whether it is the light sample's (of an emitter or the background), not a delta
-    /// light's (point, spot, directional).
-    pub(super) sampled: bool,
-}
-
-/// `direct` with the light of a bounce's `shadows` whose rays arrive (`blocked(i)` false
-/// for `shadows[i]`), added as [`Tracer::shade`] adds them when it traces each at once: the
-/// delta lights' sum, then the light sample's.
-pub(super) fn arrive<F: Float>(
-    direct: Color<F>,
-    shadows: &[Shadow<F>],
-    blocked: impl Fn(usize) -> bool,
-) -> Color<F> {
-    let (mut sum, mut sample) = (None, None);
-    for (i, s) in shadows.iter().enumerate() {
-        match (blocked(i), s.sampled) {
-            (true, _) => {}
-            (false, true) => sample = Some(s.light),
-            (false, false) => sum = Some(sum.map_or(s.light, |sum| sum + s.light)),
-        }
-    }
-    let direct = sum.map_or(direct, |sum| sum + direct);
-    sample.map_or(direct, |light| direct + light)
-}
-
 /// How a ray left the vertex before it: the per-path state the weight of the emitted
 /// light it finds depends on.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -108,7 +72,7 @@ pub(super) enum Arrival<F> {
 /// Traces rays through one scene and counts them.
 pub struct Tracer<'a, F, S, M> {
     pub(super) scene: &'a Scene<F, S, M>,
-    max_depth: u32,
+    pub(super) max_depth: u32,
     light_sampling: LightSampling,
     /// The probability that a light sample draws the background (0 unless the scene makes
     /// it a light, [`Scene::set_background_sampled`]); an emitter otherwise.
@@ -367,30 +331,6 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         }
     }
 
-    /// The colour of a ray that escapes after `depth` bounces: the background's. Where the
-    /// background is a light it counts only before `max_depth` bounces, and, if the ray was
-    /// scattered from a vertex that also sampled lights, it is weighted by
-    /// `w = p_s²/(p_s² + p_b²)`, `p_b` the density with which that vertex's light sample
-    /// draws the direction (the probability of drawing the background times its density).
-    #[inline]
-    fn escaped(&self, ray: &Ray<F>, depth: u32, arrival: Arrival<F>) -> Color<F> {
-        let background = self.scene.background();
-        if !self.scene.background_sampled() {
-            return background.color(ray.direction);
-        }
-        if depth >= self.max_depth {
-            return Color::zero();
-        }
-        let colour = background.color(ray.direction);
-        match arrival {
-            Arrival::Scattered(scatter_pdf) if self.sky > 0.0 => {
-                let light_pdf = F::from_f64(self.sky) * background.pdf(ray.direction);
-                colour * power_heuristic(scatter_pdf, light_pdf)
-            }
-            _ => colour,
-        }
-    }
-
     /// Whether a hit at `depth` on a surface with a non-delta lobe samples a light:
     /// light sampling is on, there is an emitter or a background that is a light, and a ray
     /// scattered from here would still count the light it finds.
@@ -399,33 +339,6 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
         self.light_sampling == LightSampling::Mis
             && (!emitters.is_empty() || self.sky > 0.0)
             && depth + 1 < self.max_depth
-    }
-
-    /// The light an emitter gives off toward the ray that hit it: `L_e` on an emitting
-    /// face, weighted, if the ray was scattered from a vertex that also sampled emitters, by
-    /// `w = p_s²/(p_s² + p_e²)`: `p_s` the density the ray was scattered with and `p_e`
-    /// the density with which sampling the lights from its origin draws this direction
-    /// (the probability of drawing an emitter at all, this emitter's, and its shape's
-    /// density).
-    fn emitted(
-        &self,
-        ray: &Ray<F>,
-        hit: Hit<F>,
-        object: &Object<S>,
-        emission: Emission<F>,
-        arrival: Arrival<F>,
-        emitters: &Emitters,
-    ) -> Color<F> {
-        let radiance = emission.toward(hit.front_face);
-        match arrival {
-            Arrival::Scattered(scatter_pdf) if radiance != Color::zero() => {
-                let chosen =
-                    F::from_f64((1.0 - self.sky) * emitters.probability_of(object.shape.area(), emission));
-                let light_pdf = chosen * object.shape.pdf(ray, &hit);
-                radiance * power_heuristic(scatter_pdf, light_pdf)
-            }
-            _ => radiance,
-        }
     }
 }
 
