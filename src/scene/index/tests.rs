@@ -100,6 +100,11 @@ impl crate::material::Material<f64> for Tag {
 /// Spheres of random sizes (each added twice, so that exact ties happen), triangles, a
 /// mesh (added twice too) and a plane, through the plain loop and through a BVH.
 fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>>> {
+    mixed_of(seed, triangles, 120)
+}
+
+/// [`mixed`] with `n` spheres or triangles at random places.
+fn mixed_of(seed: u64, triangles: bool, n: usize) -> Vec<Object<ShapeKind<f64>>> {
     use crate::shape::Plane;
     use rand::{RngExt, SeedableRng};
     let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed);
@@ -111,12 +116,19 @@ fn mixed(seed: u64, triangles: bool) -> Vec<Object<ShapeKind<f64>>> {
         )
     };
     let mut shapes: Vec<ShapeKind<f64>> = Vec::new();
-    for i in 0..120 {
+    // Smaller where there are more, so that as many rays are blocked (exactly 1 for 120).
+    let size = (120.0 / n as f64).cbrt();
+    for i in 0..n {
         let c = v(5.0);
         if triangles && i % 3 == 0 {
-            shapes.push(Triangle::new(c + v(0.8), c + v(0.8), c + v(0.8)).unwrap().into());
+            let corner = |v: Vec3<f64>| c + v * size;
+            shapes.push(
+                Triangle::new(corner(v(0.8)), corner(v(0.8)), corner(v(0.8)))
+                    .unwrap()
+                    .into(),
+            );
         } else {
-            let s: ShapeKind<f64> = Sphere::new(c, 0.05 + v(0.4).x.abs()).unwrap().into();
+            let s: ShapeKind<f64> = Sphere::new(c, size * (0.05 + v(0.4).x.abs())).unwrap().into();
             shapes.push(s.clone());
             shapes.push(s);
         }
@@ -156,17 +168,20 @@ fn tags<S>(objects: &[Object<S>]) -> Vec<Tag> {
 /// The batch answers exactly as one ray at a time: the same record and object, for
 /// rays from outside, from inside and from the surfaces, ties included. (It finds a
 /// mismatch if a batch loop skips an object, tests a packet with the wrong ray, or
-/// breaks ties the other way.) So does the batch's occlusion query.
+/// breaks ties the other way.) So does the batch's occlusion query. The last case has
+/// more objects than stay cached, which the batch reads ahead.
 #[test]
 fn a_batch_answers_like_single_rays() {
     use rand::{RngExt, SeedableRng};
-    for (seed, triangles, acceleration) in [
-        (1, false, Acceleration::Linear),
-        (2, true, Acceleration::Linear),
-        (3, false, Acceleration::Bvh),
-        (4, true, Acceleration::Bvh),
+    for (seed, triangles, acceleration, n) in [
+        (1, false, Acceleration::Linear, 120),
+        (2, true, Acceleration::Linear, 120),
+        (3, false, Acceleration::Bvh, 120),
+        (4, true, Acceleration::Bvh, 120),
+        (5, true, Acceleration::Bvh, 30_000),
     ] {
-        let objects = mixed(seed, triangles);
+        let objects = mixed_of(seed, triangles, n);
+        assert_eq!(size_of_val(&objects[..]) > super::CACHED, n > 120);
         let tags = tags(&objects);
         let index = Index::build(&objects, acceleration, BvhQuality::Medium);
         let mut rng = crate::sampling::DefaultRng::seed_from_u64(seed + 10);
