@@ -2,6 +2,7 @@
 
 use crate::float::Float;
 use crate::lanes::F4;
+use crate::lanes::Lanes;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
 
@@ -185,6 +186,28 @@ pub(crate) fn slab_test<F: Float>(
         let t_far = (far[axis] - o) * F4::splat(ray.inv_far[axis]);
         t0 = F4::select_lt(t0, t_near, t_near, t0);
         t1 = F4::select_lt(t_far, t1, t_far, t1);
+    }
+    (t0, t1)
+}
+
+/// [`slab_test`] against as many boxes as `L` has lanes (a wide node's, [`Float::Node`]).
+#[inline(always)]
+pub(crate) fn slab_test_lanes<F: Float, L: Lanes<F>>(
+    near: &[L; 3],
+    far: &[L; 3],
+    ray: &SlabRay<F>,
+    t_max: F,
+) -> (L, L) {
+    let mut t0 = L::from_fn(|_| F::zero());
+    let mut t1 = L::from_fn(|_| t_max);
+    for axis in 0..3 {
+        let o = ray.origin[axis];
+        for k in 0..L::N {
+            let t_near = (near[axis][k] - o) * ray.inv_near[axis];
+            let t_far = (far[axis][k] - o) * ray.inv_far[axis];
+            t0[k] = if t0[k] < t_near { t_near } else { t0[k] };
+            t1[k] = if t_far < t1[k] { t_far } else { t1[k] };
+        }
     }
     (t0, t1)
 }

@@ -15,7 +15,7 @@ use crate::float::Float;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
 use rayon::prelude::*;
-use wide::{Child, Wide};
+use wide::{Child, Wide, width};
 
 /// Most primitives a leaf may hold: one packet of spheres ([`crate::shape::Sphere4`]).
 const MAX_LEAF: usize = crate::lanes::LANES;
@@ -38,7 +38,7 @@ struct Node<F> {
 
 /// A bounding volume hierarchy over primitives `0..n` given by their boxes.
 #[derive(Clone, Debug)]
-pub struct Bvh<F> {
+pub struct Bvh<F: Float> {
     /// The binary tree's node count and SAH cost, for reports (the tree itself is dropped
     /// once collapsed into `wide`).
     node_count: usize,
@@ -46,13 +46,14 @@ pub struct Bvh<F> {
     indices: Vec<u32>,
     /// Leaf `k` holds `indices[leaves[k].0..leaves[k].1]`.
     leaves: Vec<(u32, u32)>,
-    /// The same tree collapsed to four children per node, which the traversal runs on.
+    /// The same tree collapsed to eight children per node in `f32`, four in `f64`
+    /// ([`Float::Node`]), which the traversal runs on.
     wide: Vec<Wide<F>>,
     /// The wide tree's root (`None` for an empty hierarchy).
     root: Option<Child>,
     /// For each wide node, its lanes near to far in each direction octant
     /// ([`Bvh::traverse_all`]).
-    orders: Vec<[[u8; 4]; 8]>,
+    orders: Vec<[F::Node<u8>; 8]>,
     /// Levels below the wide root.
     wide_depth: usize,
 }
@@ -164,8 +165,8 @@ impl<F: Float> Bvh<F> {
     /// skipped (a box entered exactly at `t_max` is still visited, so a caller can break
     /// ties at equal distance).
     ///
-    /// It runs on the 4-wide collapse of the tree: at each node the ray is tested against
-    /// the four children's boxes at once, the ones it enters are stacked nearest on top with
+    /// It runs on the wide collapse of the tree (eight children a node in `f32`, four in
+    /// `f64`): at each node the ray is tested against the children's boxes at once, the ones it enters are stacked nearest on top with
     /// their entry distances, and a stacked subtree that a later hit has moved out of reach
     /// is dropped without another test.
     #[inline]
@@ -201,10 +202,10 @@ impl<F: Float> Bvh<F> {
         }
     }
 
-    /// The stack entries [`Bvh::traverse`] needs: each wide level stacks at most four
+    /// The stack entries [`Bvh::traverse`] needs: each wide level stacks at most all its
     /// children, one of which is popped at once.
     fn stack_size(&self) -> usize {
-        3 * self.wide_depth + 4
+        (width::<F>() - 1) * self.wide_depth + width::<F>()
     }
 
     /// Whether `test(k)` is true for some leaf whose box the ray meets in `(0, t_max)`;
@@ -224,16 +225,16 @@ impl<F: Float> Bvh<F> {
     }
 }
 
-/// Bytes a node of the tree the traversal runs on takes: its four boxes and children, and
+/// Bytes a node of the tree the traversal runs on takes: its boxes and children, and
 /// its lanes' orders (for the tests that pin the documented memory figures).
 #[cfg(test)]
-pub(crate) fn wide_node_bytes<F>() -> usize {
-    std::mem::size_of::<Wide<F>>() + std::mem::size_of::<[[u8; 4]; 8]>()
+pub(crate) fn wide_node_bytes<F: Float>() -> usize {
+    std::mem::size_of::<Wide<F>>() + std::mem::size_of::<[F::Node<u8>; 8]>()
 }
 
 /// The alignment of a node of the tree the traversal runs on (a cache line).
 #[cfg(test)]
-pub(crate) fn wide_node_align<F>() -> usize {
+pub(crate) fn wide_node_align<F: Float>() -> usize {
     std::mem::align_of::<Wide<F>>()
 }
 

@@ -147,7 +147,7 @@ where
 /// # Ok::<(), raytrace::Error>(())
 /// ```
 #[must_use]
-pub struct Renderer<'a, F, S, M, C, R = DefaultRng> {
+pub struct Renderer<'a, F: Float, S, M, C, R = DefaultRng> {
     scene: &'a Scene<F, S, M>,
     camera: &'a C,
     settings: RenderSettings,

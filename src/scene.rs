@@ -59,7 +59,7 @@ impl MaterialId {
 /// it ([`MaterialId`]): [`Scene::add`] adds a material for each object, while
 /// [`Scene::add_material`] and [`Scene::add_object`] let many objects share one.
 #[derive(Clone, Debug)]
-pub struct Scene<F, S, M> {
+pub struct Scene<F: Float, S, M> {
     objects: Vec<Object<S>>,
     materials: Vec<M>,
     lights: Vec<Light<F>>,

@@ -15,8 +15,8 @@
 //! starts within that `t`, as in [`Bvh::traverse`].
 
 use super::Bvh;
-use super::wide::Child;
-use crate::aabb::{SlabRay, slab_test};
+use super::wide::{Child, width};
+use crate::aabb::{SlabRay, slab_test_lanes};
 use crate::float::Float;
 use crate::ray::Ray;
 
@@ -48,16 +48,19 @@ pub(crate) struct Streams<F> {
 /// Rays a node tests at once: a longer list is taken in chunks of this many.
 const CHUNK: usize = 64;
 
-/// A level's buffers: the rays of a chunk entering each of the node's four children.
+/// A level's buffers: the rays of a chunk entering each of the node's children.
 #[derive(Clone, Debug)]
 struct Level {
-    children: [[RayIndex; CHUNK]; 4],
+    children: [[RayIndex; CHUNK]; MAX_WIDTH],
 }
+
+/// The most children a wide node has ([`Float::Node`](crate::Float::Node)).
+const MAX_WIDTH: usize = 8;
 
 impl Default for Level {
     fn default() -> Self {
         Self {
-            children: [[0; CHUNK]; 4],
+            children: [[0; CHUNK]; MAX_WIDTH],
         }
     }
 }
@@ -117,7 +120,7 @@ impl<F: Float> Bvh<F> {
 }
 
 /// One stream's walk down the tree.
-struct Walk<'w, F, L> {
+struct Walk<'w, F: Float, L> {
     bvh: &'w Bvh<F>,
     prepared: &'w [SlabRay<F>],
     stack: &'w mut [(Child, F)],
@@ -157,24 +160,24 @@ impl<F: Float, L: FnMut(usize, &[RayIndex], &mut [F])> Walk<'_, F, L> {
         let (near, far) = n.faces(octant);
         let (here, deeper) = levels.split_first_mut().expect("levels cover the tree's depth");
         for chunk in list.chunks(CHUNK) {
-            // Each ray is written to all four children's lists and kept (its list's count
+            // Each ray is written to all the children's lists and kept (its list's count
             // moved on) where it enters; the indices are masked to the lists' fixed size
-            // (one vector operation for the four), so there is no bounds check either.
-            let mut counts = [0u32; 4];
+            // (one vector operation for all), so there is no bounds check either.
+            let mut counts = [0u32; MAX_WIDTH];
             // `prepared` cut to `t_max`'s length: one bounds check serves both.
             let prepared = &self.prepared[..self.t_max.len()];
             for &r in chunk {
                 let reach = self.t_max[r as usize];
-                let (t0, t1) = slab_test(&near, &far, &prepared[r as usize], reach);
+                let (t0, t1) = slab_test_lanes(&near, &far, &prepared[r as usize], reach);
                 let at = counts.map(|c| c as usize & (CHUNK - 1));
-                for lane in 0..4 {
+                for lane in 0..width::<F>() {
                     here.children[lane][at[lane]] = r;
                     // One comparison per lane added to its count, not a bit mask: the
                     // counts stay one vector, where a mask's bits are pulled out one by one.
-                    counts[lane] += u32::from(t0.0[lane] <= t1.0[lane]);
+                    counts[lane] += u32::from(t0[lane] <= t1[lane]);
                 }
             }
-            for &lane in &self.bvh.orders[i as usize][octant] {
+            for &lane in self.bvh.orders[i as usize][octant].as_ref() {
                 let lane = lane as usize;
                 let children = &here.children[lane][..counts[lane] as usize];
                 if children.is_empty() {

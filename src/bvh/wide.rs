@@ -1,11 +1,21 @@
-//! The 4-wide layout the traversal runs on: each node holds the boxes of up to four
-//! children side by side (structure of arrays), so one ray is tested against four boxes
-//! with the same few instructions per lane, which the compiler turns into SIMD.
+//! The wide layout the traversal runs on: each node holds the boxes of up to eight children
+//! (`f32`) or four (`f64`, [`Float::Node`]) side by side (structure of arrays), so one ray is
+//! tested against all of them with the same few instructions per lane, which the compiler
+//! turns into SIMD.
 
 use super::{Bvh, Node};
-use crate::aabb::{SlabRay, slab_test};
+use crate::aabb::{SlabRay, slab_test_lanes};
 use crate::float::Float;
-use crate::lanes::F4;
+use crate::lanes::Lanes;
+
+/// Children of a wide node: eight for `f32`, four for `f64` ([`Float::Node`]).
+#[inline(always)]
+pub(super) fn width<F: Float>() -> usize {
+    <F::Node<u8> as Lanes<u8>>::N
+}
+
+/// One face of each of a node's boxes, per axis: the near or the far ones.
+pub(super) type Faces<F> = [<F as Float>::Node<F>; 3];
 
 /// What a lane of a wide node points to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -18,25 +28,25 @@ pub(super) enum Child {
     Leaf(u32),
 }
 
-/// Four children's boxes, one [`F4`] per side and axis: `sides[0][axis].0[lane]` is the
-/// low face, `sides[1][axis].0[lane]` the high one.
+/// The children's boxes, one set of lanes per side and axis: `sides[0][axis][lane]` is the
+/// low face, `sides[1][axis][lane]` the high one.
 ///
-/// Aligned to a cache line, so that a node of 128 bytes (f32) spans two lines, not three.
+/// Aligned to a cache line, so that a node of 256 bytes (f32) spans four lines, not five.
 #[derive(Clone, Copy, Debug)]
 #[repr(align(64))]
-pub(super) struct Wide<F> {
-    sides: [[F4<F>; 3]; 2],
-    child: [Child; 4],
+pub(super) struct Wide<F: Float> {
+    sides: [[F::Node<F>; 3]; 2],
+    child: F::Node<Child>,
 }
 
 impl<F: Float> Wide<F> {
-    /// The four boxes' faces as a ray of direction octant `octant` (bit `a` set where
+    /// The boxes' faces as a ray of direction octant `octant` (bit `a` set where
     /// the direction's axis `a` is negative) meets them, per axis: `(near, far)`.
     ///
     /// The sides are picked by index, not by branch: the octant changes from stream to
     /// stream, and a branch on it mispredicted (cachegrind, `random_spheres`).
     #[inline(always)]
-    pub(super) fn faces(&self, octant: usize) -> ([F4<F>; 3], [F4<F>; 3]) {
+    pub(super) fn faces(&self, octant: usize) -> (Faces<F>, Faces<F>) {
         let side = |axis: usize| (octant >> axis) & 1;
         (
             std::array::from_fn(|axis| self.sides[side(axis)][axis]),
@@ -53,13 +63,13 @@ impl<F: Float> Wide<F> {
     /// For each direction octant (bit `a` set where the direction's axis `a` is
     /// negative), the node's lanes near to far along the octant's diagonal: by the
     /// centres of their boxes projected on it, empty lanes last.
-    pub(super) fn orders(&self) -> [[u8; 4]; 8] {
+    pub(super) fn orders(&self) -> [F::Node<u8>; 8] {
         // The centres times two: the same order, and each made once, not once a comparison.
-        let centres: [[f64; 3]; 4] = std::array::from_fn(|lane| {
-            std::array::from_fn(|axis| (self.sides[0][axis].0[lane] + self.sides[1][axis].0[lane]).to_f64())
+        let centres = F::Node::<[f64; 3]>::from_fn(|lane| {
+            std::array::from_fn(|axis| (self.sides[0][axis][lane] + self.sides[1][axis][lane]).to_f64())
         });
         std::array::from_fn(|octant| {
-            let keys: [f64; 4] = std::array::from_fn(|lane| {
+            let keys = F::Node::<f64>::from_fn(|lane| {
                 if self.child[lane] == Child::Empty {
                     return f64::INFINITY;
                 }
@@ -70,8 +80,10 @@ impl<F: Float> Wide<F> {
                     })
                     .sum()
             });
-            let mut lanes = [0u8, 1, 2, 3];
-            lanes.sort_by(|&a, &b| keys[usize::from(a)].total_cmp(&keys[usize::from(b)]));
+            let mut lanes = F::Node::<u8>::from_fn(|k| k as u8);
+            lanes
+                .as_mut()
+                .sort_by(|&a, &b| keys[usize::from(a)].total_cmp(&keys[usize::from(b)]));
             lanes
         })
     }
@@ -81,14 +93,15 @@ impl<F: Float> Wide<F> {
 /// returns the index of the wide node made for `at` (which must be interior).
 pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wide<F>>) -> u32 {
     // Open the children of `at`, then repeatedly open the interior child with the largest
-    // box (the likeliest to be entered) until there are four.
+    // box (the likeliest to be entered) until the node is full.
     let children = |i: usize| {
         let l = nodes[i].offset as usize;
         [l, l + 1]
     };
-    let (mut lanes, mut len) = ([0usize; 4], 2);
+    let (mut lanes, mut len) = (F::Node::<usize>::from_fn(|_| 0), 2);
+    let lanes = lanes.as_mut();
     lanes[..2].copy_from_slice(&children(at));
-    while len < 4 {
+    while len < width::<F>() {
         let area = |i: usize| {
             let [lo, hi] = nodes[i].bounds;
             let d = hi - lo;
@@ -107,16 +120,19 @@ pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wid
     }
     let me = out.len();
     let empty = Wide {
-        sides: [[F4::splat(F::infinity()); 3], [F4::splat(F::neg_infinity()); 3]],
-        child: [Child::Empty; 4],
+        sides: [
+            [Lanes::from_fn(|_| F::infinity()); 3],
+            [Lanes::from_fn(|_| F::neg_infinity()); 3],
+        ],
+        child: Lanes::from_fn(|_| Child::Empty),
     };
     out.push(empty);
     let mut node = empty;
     for (lane, &i) in lanes[..len].iter().enumerate() {
         let [lo, hi] = nodes[i].bounds;
         for axis in 0..3 {
-            node.sides[0][axis].0[lane] = lo[axis];
-            node.sides[1][axis].0[lane] = hi[axis];
+            node.sides[0][axis][lane] = lo[axis];
+            node.sides[1][axis][lane] = hi[axis];
         }
         node.child[lane] = if nodes[i].count > 0 {
             Child::Leaf(nodes[i].offset)
@@ -129,11 +145,12 @@ pub(super) fn collapse<F: Float>(nodes: &[Node<F>], at: usize, out: &mut Vec<Wid
 }
 
 /// Levels below `root` in the wide tree.
-pub(super) fn depth<F>(wide: &[Wide<F>], root: Option<Child>) -> usize {
+pub(super) fn depth<F: Float>(wide: &[Wide<F>], root: Option<Child>) -> usize {
     match root {
         Some(Child::Node(i)) => {
             1 + wide[i as usize]
                 .child
+                .as_ref()
                 .iter()
                 .map(|&c| depth(wide, Some(c)))
                 .max()
@@ -143,8 +160,8 @@ pub(super) fn depth<F>(wide: &[Wide<F>], root: Option<Child>) -> usize {
     }
 }
 
-/// The entry distance into each of node `n`'s four boxes, and the mask of the boxes the ray
-/// `r` (of direction octant `octant`) meets in `(0, t_max]`: [`slab_test`]. With `PAD`,
+/// The entry distance into each of node `n`'s boxes, and the mask of the boxes the ray
+/// `r` (of direction octant `octant`) meets in `(0, t_max]`: [`slab_test_lanes`]. With `PAD`,
 /// every box is first grown by the pad whose near-face shift (per axis, toward the ray's
 /// origin) is `shift`: the far faces move the other way.
 #[inline(always)]
@@ -153,17 +170,23 @@ fn entries<F: Float, const PAD: bool>(
     octant: usize,
     n: &Wide<F>,
     t_max: F,
-    shift: &[F4<F>; 3],
-) -> (F4<F>, u32) {
+    shift: &[F; 3],
+) -> (F::Node<F>, u32) {
     let (mut near, mut far) = n.faces(octant);
     if PAD {
         for axis in 0..3 {
-            near[axis] = near[axis] + shift[axis];
-            far[axis] = far[axis] - shift[axis];
+            near[axis] = Lanes::from_fn(|k| near[axis][k] + shift[axis]);
+            far[axis] = Lanes::from_fn(|k| far[axis][k] - shift[axis]);
         }
     }
-    let (t0, t1) = slab_test(&near, &far, r, t_max);
-    (t0, F4::mask_le(t0, t1))
+    let (t0, t1) = slab_test_lanes(&near, &far, r, t_max);
+    (t0, mask_le::<F, _>(&t0, &t1))
+}
+
+/// The bits `k` where `a[k] ≤ b[k]`.
+#[inline(always)]
+fn mask_le<F: Float, L: Lanes<F>>(a: &L, b: &L) -> u32 {
+    (0..L::N).fold(0, |m, k| m | (u32::from(a[k] <= b[k]) << k))
 }
 
 impl<F: Float> Bvh<F> {
@@ -184,7 +207,7 @@ impl<F: Float> Bvh<F> {
         let octant = r.octant();
         // Toward the origin: down the axis where the direction is positive (the near face
         // is the low one).
-        let shift = [0, 1, 2].map(|axis| F4::splat(if r.negative(axis) { pad } else { -pad }));
+        let shift = [0, 1, 2].map(|axis| if r.negative(axis) { pad } else { -pad });
         let mut top = 0;
         let mut current = match start {
             Some(start) => start,
@@ -207,7 +230,7 @@ impl<F: Float> Bvh<F> {
                     while entered != 0 {
                         let lane = entered.trailing_zeros() as usize;
                         entered &= entered - 1;
-                        let tl = t.0[lane];
+                        let tl = t[lane];
                         let mut k = top;
                         while k > base && stack[k - 1].1 < tl {
                             stack[k] = stack[k - 1];

@@ -70,7 +70,7 @@ pub(super) enum Arrival<F> {
 }
 
 /// Traces rays through one scene and counts them.
-pub struct Tracer<'a, F, S, M> {
+pub struct Tracer<'a, F: Float, S, M> {
     pub(super) scene: &'a Scene<F, S, M>,
     pub(super) max_depth: u32,
     light_sampling: LightSampling,
@@ -344,7 +344,7 @@ impl<'a, F: Float, S: Layout<F>, M> Tracer<'a, F, S, M> {
 
 /// A hit waiting for its material: [`Tracer::shade`]'s state handed to
 /// [`Scatter::resolve`], which visits it with the material that answers there.
-struct Vertex<'t, 'a, F, S, M, R: ?Sized> {
+struct Vertex<'t, 'a, F: Float, S, M, R: ?Sized> {
     tracer: &'t mut Tracer<'a, F, S, M>,
     ray: &'t Ray<F>,
     hit: Hit<F>,

@@ -41,7 +41,7 @@ pub(crate) struct Nearests<F> {
 
 /// A scene's intersection structure, built from its objects on the first query.
 #[derive(Clone, Debug)]
-pub(super) struct Index<F> {
+pub(super) struct Index<F: Float> {
     /// Every query is the plain loop over the objects ([`plain`]); nothing below is used.
     plain: bool,
     /// The packets every ray tests: all the parts, or with a BVH the unbounded and the

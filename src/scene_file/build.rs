@@ -29,7 +29,7 @@ use std::sync::Arc;
 
 /// What a scene file builds: everything a render needs, and a summary to report.
 #[derive(Clone, Debug)]
-pub struct Built<F> {
+pub struct Built<F: Float> {
     /// The scene.
     pub scene: EnumScene<F>,
     /// The camera, sized by `[render] width`.
