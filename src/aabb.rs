@@ -1,8 +1,7 @@
 //! Axis-aligned bounding boxes and the ray–box slab test.
 
-use crate::float::Float;
+use crate::float::{Float, Lanes};
 use crate::lanes::F4;
-use crate::lanes::Lanes;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
 

@@ -8,6 +8,7 @@
 //! same renderer produces fast previews and reference images.
 
 use std::fmt::{Debug, Display};
+use std::ops::{Index, IndexMut};
 
 /// A floating-point scalar the renderer can run on.
 ///
@@ -20,7 +21,7 @@ pub trait Float: num_traits::Float + Debug + Display + Default + Send + Sync + '
     /// fill a 256-bit register), `[T; 4]` for the wider scalars. Measured against four
     /// lanes, eight traced 10⁵ spheres 1.1× as fast in both precisions, but took 1.05–1.09×
     /// the time on the spec's `random_spheres` in `f64` (`docs/PERFORMANCE.md`).
-    type Node<T: Copy + Debug + Send + Sync>: crate::lanes::Lanes<T>;
+    type Node<T: Copy + Debug + Send + Sync>: Lanes<T>;
 
     /// Converts an `f64` literal or random draw to this scalar, rounding to nearest.
     ///
@@ -290,6 +291,25 @@ macro_rules! for_each_scalar {
 }
 #[cfg(test)]
 pub(crate) use for_each_scalar;
+
+/// Values side by side in a plain array, `[T; N]`: one per child of a wide BVH node, as
+/// many as the scalar picks ([`Float::Node`]).
+pub trait Lanes<T>:
+    Copy + Debug + Send + Sync + Index<usize, Output = T> + IndexMut<usize> + AsRef<[T]> + AsMut<[T]>
+{
+    /// How many.
+    const N: usize;
+    /// Lane `k` set to `f(k)`.
+    fn from_fn(f: impl FnMut(usize) -> T) -> Self;
+}
+
+impl<T: Copy + Debug + Send + Sync, const N: usize> Lanes<T> for [T; N] {
+    const N: usize = N;
+    #[inline(always)]
+    fn from_fn(f: impl FnMut(usize) -> T) -> Self {
+        std::array::from_fn(f)
+    }
+}
 
 #[cfg(test)]
 mod tests;

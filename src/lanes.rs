@@ -9,27 +9,7 @@
 //! came out scalar.)
 
 use crate::float::Float;
-use std::fmt::Debug;
-use std::ops::{Add, Div, Index, IndexMut, Mul, Neg, Sub};
-
-/// Values side by side in a plain array, `[T; N]`: one per child of a wide BVH node, as
-/// many as the scalar picks ([`Float::Node`]).
-pub trait Lanes<T>:
-    Copy + Debug + Send + Sync + Index<usize, Output = T> + IndexMut<usize> + AsRef<[T]> + AsMut<[T]>
-{
-    /// How many.
-    const N: usize;
-    /// Lane `k` set to `f(k)`.
-    fn from_fn(f: impl FnMut(usize) -> T) -> Self;
-}
-
-impl<T: Copy + Debug + Send + Sync, const N: usize> Lanes<T> for [T; N] {
-    const N: usize = N;
-    #[inline(always)]
-    fn from_fn(f: impl FnMut(usize) -> T) -> Self {
-        std::array::from_fn(f)
-    }
-}
+use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// Lanes in an [`F4`].
 pub const LANES: usize = 4;

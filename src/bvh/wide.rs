@@ -5,8 +5,7 @@
 
 use super::{Bvh, Node};
 use crate::aabb::{SlabRay, slab_test_lanes};
-use crate::float::Float;
-use crate::lanes::Lanes;
+use crate::float::{Float, Lanes};
 
 /// Children of a wide node: eight for `f32`, four for `f64` ([`Float::Node`]).
 #[inline(always)]
