@@ -166,9 +166,9 @@ impl<F: Float> Bvh<F> {
     /// ties at equal distance).
     ///
     /// It runs on the wide collapse of the tree (eight children a node in `f32`, four in
-    /// `f64`): at each node the ray is tested against the children's boxes at once, the ones it enters are stacked nearest on top with
-    /// their entry distances, and a stacked subtree that a later hit has moved out of reach
-    /// is dropped without another test.
+    /// `f64`): at each node the ray is tested against the children's boxes at once, the
+    /// ones it enters are stacked nearest on top with their entry distances, and a stacked
+    /// subtree that a later hit has moved out of reach is dropped without another test.
     #[inline]
     pub fn traverse(&self, ray: &Ray<F>, t_max: F, visit: impl FnMut(usize, F) -> Option<F>) {
         self.traverse_with::<false>(ray, t_max, F::zero(), visit);
