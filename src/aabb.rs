@@ -1,7 +1,6 @@
 //! Axis-aligned bounding boxes and the ray–box slab test.
 
 use crate::float::{Float, Lanes};
-use crate::lanes::F4;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
 
@@ -72,23 +71,16 @@ impl<F: Float> Aabb<F> {
         }
     }
 
-    /// Whether the ray meets the box for some `t` in `[0, t_max]`, by the slab test
-    /// (`slab_test`, the one the BVH runs, with the other three lanes empty).
+    /// Whether the ray meets the box for some `t` in `[0, t_max]`, by the slab test the
+    /// BVH runs ([`slab_test`], here with one lane).
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> bool {
         let r = SlabRay::new(ray);
-        let empty = Self::empty();
-        let lanes = |corner: Vec3<F>, none: Vec3<F>, axis: usize| {
-            F4([corner[axis], none[axis], none[axis], none[axis]])
-        };
-        let (lo, hi) = (
-            |a| lanes(self.min, empty.min, a),
-            |a| lanes(self.max, empty.max, a),
-        );
-        let near = std::array::from_fn(|axis| if r.negative(axis) { hi(axis) } else { lo(axis) });
-        let far = std::array::from_fn(|axis| if r.negative(axis) { lo(axis) } else { hi(axis) });
+        let (lo, hi) = (|a: usize| [self.min[a]], |a: usize| [self.max[a]]);
+        let near = std::array::from_fn(|a| if r.negative(a) { hi(a) } else { lo(a) });
+        let far = std::array::from_fn(|a| if r.negative(a) { lo(a) } else { hi(a) });
         let (t0, t1) = slab_test(&near, &far, &r, t_max);
-        t0.0[0] <= t1.0[0]
+        t0[0] <= t1[0]
     }
 
     /// `[min, max]`.
@@ -149,7 +141,8 @@ impl<F: Float> SlabRay<F> {
     }
 }
 
-/// The slab test of one ray against four boxes at once, given by their `near` and `far`
+/// The slab test of one ray against as many boxes as `L` has lanes (a wide node's,
+/// [`Float::Node`]), given by their `near` and `far`
 /// faces along each axis (the near face is the low one where the direction is positive):
 /// the entry and exit distances `(t0, t1)` of the intersection of the three slabs
 /// `t ∈ [(near − O)/D, (far − O)/D]`, clipped to `[0, t_max]`. The ray meets box `k` where
@@ -171,27 +164,7 @@ impl<F: Float> SlabRay<F> {
 /// answer cannot depend on the order the boxes are visited in). A ray lying in a slab's
 /// plane gives `0·∞ = NaN`, which fails every comparison: no constraint.
 #[inline(always)]
-pub(crate) fn slab_test<F: Float>(
-    near: &[F4<F>; 3],
-    far: &[F4<F>; 3],
-    ray: &SlabRay<F>,
-    t_max: F,
-) -> (F4<F>, F4<F>) {
-    let mut t0 = F4::splat(F::zero());
-    let mut t1 = F4::splat(t_max);
-    for axis in 0..3 {
-        let o = F4::splat(ray.origin[axis]);
-        let t_near = (near[axis] - o) * F4::splat(ray.inv_near[axis]);
-        let t_far = (far[axis] - o) * F4::splat(ray.inv_far[axis]);
-        t0 = F4::select_lt(t0, t_near, t_near, t0);
-        t1 = F4::select_lt(t_far, t1, t_far, t1);
-    }
-    (t0, t1)
-}
-
-/// [`slab_test`] against as many boxes as `L` has lanes (a wide node's, [`Float::Node`]).
-#[inline(always)]
-pub(crate) fn slab_test_lanes<F: Float, L: Lanes<F>>(
+pub(crate) fn slab_test<F: Float, L: Lanes<F>>(
     near: &[L; 3],
     far: &[L; 3],
     ray: &SlabRay<F>,

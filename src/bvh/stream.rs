@@ -16,7 +16,7 @@
 
 use super::Bvh;
 use super::wide::{Child, width};
-use crate::aabb::{SlabRay, slab_test_lanes};
+use crate::aabb::{SlabRay, slab_test};
 use crate::float::Float;
 use crate::ray::Ray;
 
@@ -168,7 +168,7 @@ impl<F: Float, L: FnMut(usize, &[RayIndex], &mut [F])> Walk<'_, F, L> {
             let prepared = &self.prepared[..self.t_max.len()];
             for &r in chunk {
                 let reach = self.t_max[r as usize];
-                let (t0, t1) = slab_test_lanes(&near, &far, &prepared[r as usize], reach);
+                let (t0, t1) = slab_test(&near, &far, &prepared[r as usize], reach);
                 let at = counts.map(|c| c as usize & (CHUNK - 1));
                 for lane in 0..width::<F>() {
                     here.children[lane][at[lane]] = r;

@@ -4,7 +4,7 @@
 //! turns into SIMD.
 
 use super::{Bvh, Node};
-use crate::aabb::{SlabRay, slab_test_lanes};
+use crate::aabb::{SlabRay, slab_test};
 use crate::float::{Float, Lanes};
 
 /// Children of a wide node: eight for `f32`, four for `f64` ([`Float::Node`]).
@@ -160,7 +160,7 @@ pub(super) fn depth<F: Float>(wide: &[Wide<F>], root: Option<Child>) -> usize {
 }
 
 /// The entry distance into each of node `n`'s boxes, and the mask of the boxes the ray
-/// `r` (of direction octant `octant`) meets in `(0, t_max]`: [`slab_test_lanes`]. With `PAD`,
+/// `r` (of direction octant `octant`) meets in `(0, t_max]`: [`slab_test`]. With `PAD`,
 /// every box is first grown by the pad whose near-face shift (per axis, toward the ray's
 /// origin) is `shift`: the far faces move the other way.
 #[inline(always)]
@@ -178,7 +178,7 @@ fn entries<F: Float, const PAD: bool>(
             far[axis] = Lanes::from_fn(|k| far[axis][k] - shift[axis]);
         }
     }
-    let (t0, t1) = slab_test_lanes(&near, &far, r, t_max);
+    let (t0, t1) = slab_test(&near, &far, r, t_max);
     (t0, mask_le::<F, _>(&t0, &t1))
 }
 
