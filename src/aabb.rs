@@ -72,7 +72,7 @@ impl<F: Float> Aabb<F> {
     }
 
     /// Whether the ray meets the box for some `t` in `[0, t_max]`, by the slab test the
-    /// BVH runs ([`slab_test`], here with one lane).
+    /// BVH runs (`slab_test`, here with one lane).
     #[inline]
     pub fn hit(&self, ray: &Ray<F>, t_max: F) -> bool {
         let r = SlabRay::new(ray);
