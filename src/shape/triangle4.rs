@@ -35,13 +35,20 @@ impl<F: Float> TriangleHits<F> {
 }
 
 impl<F: Float> Triangle4<F> {
-    /// The first (up to) four of `triangles`, each given by its vertices `[A, B, C]`;
-    /// unused lanes are degenerate (all vertices at the origin) and never hit.
+    /// The first (up to) four of `triangles`, each given by its vertices `[A, B, C]`.
+    ///
+    /// Unused lanes repeat the first triangle: they answer as its lane does, and of equally
+    /// near lanes the first is taken, so they add no hit. (Lanes of one point would never
+    /// hit either, but their edge functions are exactly zero, which sends every test of the
+    /// packet through the `f64` edge functions of step 3.)
     pub fn new(triangles: impl IntoIterator<Item = [Vec3<F>; 3]>) -> Self {
         let mut p = Self {
             vertices: [[F4::splat(F::zero()); 3]; 3],
         };
-        for (lane, t) in triangles.into_iter().take(LANES).enumerate() {
+        let mut triangles = triangles.into_iter().take(LANES).peekable();
+        let first = triangles.peek().copied();
+        let padded = triangles.chain(std::iter::repeat_n(first, LANES).flatten());
+        for (lane, t) in padded.take(LANES).enumerate() {
             for (v, vertex) in t.iter().enumerate() {
                 for axis in 0..3 {
                     p.vertices[v][axis].0[lane] = vertex[axis];
@@ -245,7 +252,8 @@ mod tests {
                 }
             }
             for &t in &got.t.0[triangles.len()..] {
-                assert_eq!(t, F::infinity(), "empty lanes are never hit");
+                let first = got.t.0[0].to_f64().to_bits();
+                assert_eq!(t.to_f64().to_bits(), first, "unused lanes answer as the first");
             }
         }
         assert!(hits > 1_000, "{}: only {hits} hits tested", F::NAME);
