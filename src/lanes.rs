@@ -51,6 +51,19 @@ impl<F: Float> F4<F> {
         self.zip(o, F::max)
     }
 
+    /// The smaller of each pair of lanes; where one is NaN, the other (as `f32::min`),
+    /// by comparisons alone, so infinities count for every [`Float`].
+    #[inline(always)]
+    pub fn least(self, o: Self) -> Self {
+        self.zip(o, |a, b| if b < a || a.is_nan() { b } else { a })
+    }
+
+    /// The larger of each pair of lanes; where one is NaN, the other, as [`F4::least`].
+    #[inline(always)]
+    pub fn greatest(self, o: Self) -> Self {
+        self.zip(o, |a, b| if b > a || a.is_nan() { b } else { a })
+    }
+
     /// Per lane: `x` where bit `k` of `mask` is set, else `y`.
     #[inline(always)]
     pub fn select(mask: u32, x: Self, y: Self) -> Self {
@@ -189,5 +202,13 @@ mod tests {
         assert_eq!(a.min_lane(), -2.0);
         assert_eq!(F4([5.0f64, 3.0, 4.0, 3.0]).min_lane(), 3.0);
         assert!(F4([-1.0f64, 4.0, 0.0, 9.0]).sqrt().0[0].is_nan());
+        let (inf, nan) = (f64::INFINITY, f64::NAN);
+        let p = F4([nan, 1.0, -inf, nan]);
+        let q = F4([2.0, nan, 3.0, nan]);
+        assert_eq!(p.least(q).0[..3], [2.0, 1.0, -inf], "a NaN gives the other");
+        assert_eq!(q.least(p).0[..3], [2.0, 1.0, -inf]);
+        assert_eq!(p.greatest(q).0[..3], [2.0, 1.0, 3.0]);
+        assert_eq!(F4([inf; 4]).greatest(q).0[..3], [inf; 3]);
+        assert!(p.least(q).0[3].is_nan() && p.greatest(q).0[3].is_nan());
     }
 }

@@ -106,7 +106,9 @@ impl<F: Float> Triangle4<F> {
         let mut e1 = cx * ay - cy * ax;
         let mut e2 = ax * by - ay * bx;
         let z = F4::splat(zero);
-        let zeros = e0.mask_eq(zero) | e1.mask_eq(zero) | e2.mask_eq(zero);
+        // Each mask is one comparison of the edges' least or greatest (NaNs left out), the
+        // same lanes as a mask per edge: three masks joined compile to a tangle of shuffles.
+        let zeros = e0.abs().least(e1.abs()).least(e2.abs()).mask_eq(zero);
         if products_exact_in_f64::<F>() && zeros != 0 {
             for k in (0..LANES).filter(|k| zeros & (1 << k) != 0) {
                 let edge = |px: F4<F>, py: F4<F>, qx: F4<F>, qy: F4<F>| {
@@ -117,8 +119,8 @@ impl<F: Float> Triangle4<F> {
             }
         }
         // Lanes as bit masks: no edge function of each sign, and a determinant that is not 0.
-        let negative = F4::mask_lt(e0, z) | F4::mask_lt(e1, z) | F4::mask_lt(e2, z);
-        let positive = F4::mask_lt(z, e0) | F4::mask_lt(z, e1) | F4::mask_lt(z, e2);
+        let negative = F4::mask_lt(e0.least(e1).least(e2), z);
+        let positive = F4::mask_lt(z, e0.greatest(e1).greatest(e2));
         let det = e0 + e1 + e2;
         let edges_pass = !(negative & positive) & !det.mask_eq(zero) & 0b1111;
         let miss = TriangleHits {
@@ -133,8 +135,8 @@ impl<F: Float> Triangle4<F> {
         let s = F4::splat(sz);
         let (az, bz, cz) = (a_z * s, b_z * s, c_z * s);
         let t_scaled = e0 * az + e1 * bz + e2 * cz;
-        let det_negative = F4::mask_lt(det, z);
-        let in_range = (det_negative & F4::mask_lt(t_scaled, z)) | (!det_negative & F4::mask_lt(z, t_scaled));
+        // `t_scaled` of `det`'s sign, nonzero: one comparison of `±t_scaled` (negation is exact).
+        let in_range = F4::mask_lt(z, F4::select_lt(det, z, -t_scaled, t_scaled));
         let inv_det = F4::splat(F::one()) / det;
         let t = t_scaled * inv_det;
         let near = edges_pass & in_range & F4::mask_le(t, F4::splat(bound));
