@@ -68,13 +68,12 @@ impl<F: Float> Binner<F> {
     ///
     /// For `last` below the last bin the clamp changes nothing, and the conversion to
     /// `u8` (truncation, below 1 and NaN to 0, saturating at 255) gives at most `last`
-    /// exactly when `x < last + 1`; a NaN fails every comparison, so it goes left as to
-    /// bin 0. (−5 to −7.5 % of the partition's instructions, the same tree.)
+    /// exactly when `x < last + 1` or `x` is NaN.
     #[inline(always)]
     fn left_of(&self, c: F, last: usize) -> bool {
         debug_assert!(last + 1 < self.count, "a split leaves a bin to the right");
-        let x = (c - self.lo) * self.scale;
-        !(x.to_f64() >= (last + 1) as f64)
+        let x = ((c - self.lo) * self.scale).to_f64();
+        x < (last + 1) as f64 || x.is_nan()
     }
 }
 
