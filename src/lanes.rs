@@ -45,10 +45,12 @@ impl<F: Float> F4<F> {
         self.map(F::abs)
     }
 
-    /// [`Float::max`] per lane (for a NaN lane, the other operand).
+    /// The larger of each pair of lanes by one comparison: `o` where `self < o`, else
+    /// `self`, so a NaN in either gives `self`. (`Float::max`, which drops the NaN, compiles
+    /// to a compare and two blends a lane pair: 1.65 % of the Cornell box's instructions.)
     #[inline(always)]
     pub fn max(self, o: Self) -> Self {
-        self.zip(o, F::max)
+        Self::select_lt(self, o, o, self)
     }
 
     /// The smaller of each pair of lanes; where one is NaN, the other (as `f32::min`),

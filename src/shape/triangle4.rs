@@ -143,7 +143,9 @@ impl<F: Float> Triangle4<F> {
         if near == 0 {
             return miss;
         }
-        // 5. The conservative t > 0 of pbrt-v4 (§6.8.4).
+        // 5. The conservative t > 0 of pbrt-v4 (§6.8.4). A NaN among the sheared
+        // coordinates makes `t_scaled` NaN (each enters it, through an edge or `z`), so its
+        // lane is not `near`: the maxima's NaN rule never reaches a lane that can hit.
         let max3 = |p: F4<F>, q: F4<F>, r: F4<F>| p.abs().max(q.abs()).max(r.abs());
         let gamma = |n: u32| F4::splat(F::gamma(n));
         let max_z = max3(az, bz, cz);
