@@ -318,16 +318,20 @@ impl<F: Float, S: Layout<F>, M> Scene<F, S, M> {
     }
 
     /// [`Scene::occluded`] of each of `rays` in `(0, reach[i])`, set in `blocked`: the same
-    /// answers, found for the whole batch at once (`near` is scratch space).
+    /// answers, found for the whole batch at once (`near` is scratch space). A ray
+    /// `aimed[i]` at part `(object, part)` stops where the scene's intersection meets that
+    /// part, not at `reach[i]` (a bound past it, which only saves work); one that does not
+    /// meet it is blocked, and counted in the number returned.
     pub(crate) fn occluded_all(
         &self,
         rays: &[Ray<F>],
         reach: &[F],
+        aimed: &[Option<(u32, u32)>],
         near: &mut Nearests<F>,
         blocked: &mut Vec<bool>,
-    ) {
+    ) -> usize {
         self.index()
-            .occluded_all(&self.objects, rays, reach, near, blocked);
+            .occluded_all(&self.objects, rays, reach, aimed, near, blocked)
     }
 }
 

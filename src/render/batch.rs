@@ -16,7 +16,10 @@
 //!   last vertex, for the weight of the emitted light it finds);
 //! - where there is a tree to walk, each bounce's shadow rays wait, and those of a depth
 //!   are traced together, as its rays are; the light that arrives is added as the
-//!   recursion adds it, before the bounce's light is folded;
+//!   recursion adds it, before the bounce's light is folded. A ray to a point drawn on an
+//!   emitter looks for its nearest hit there: where that is the emitter's part, the part's
+//!   own test has given the exact reach the recursion asks the part for, and nothing is
+//!   nearer; only otherwise is the part asked (`Scene::occluded_all`);
 //! - each pixel's samples are summed in the reference's order, sample 0 first.
 
 use super::RenderSettings;
@@ -80,6 +83,7 @@ pub(super) struct Batch<F, R> {
     shadows: Vec<Shadow<F>>,
     shadow_rays: Vec<Ray<F>>,
     reaches: Vec<F>,
+    aimed: Vec<Option<(u32, u32)>>,
     blocked: Vec<bool>,
     /// The bounces the last trace took (the logs beyond are stale).
     depth: usize,
@@ -107,6 +111,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             shadows: Vec::new(),
             shadow_rays: Vec::new(),
             reaches: Vec::new(),
+            aimed: Vec::new(),
             blocked: Vec::new(),
             depth: 0,
             bounces: Vec::new(),
@@ -292,7 +297,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
     /// Traces the shadow rays the bounces at `depth` left waiting, and adds the light of
     /// those that arrive to their bounce's logged light ([`arrive`]), or to the colour of
     /// the path that ended there (then saturated, as the recursion's end is).
-    fn trace_shadows<S, M>(&mut self, tracer: &Tracer<'_, F, S, M>, depth: usize)
+    fn trace_shadows<S, M>(&mut self, tracer: &mut Tracer<'_, F, S, M>, depth: usize)
     where
         S: Layout<F>,
         M: Scatter<F, R>,
@@ -302,14 +307,18 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         }
         self.shadow_rays.clear();
         self.reaches.clear();
+        self.aimed.clear();
         for s in &self.shadows {
             self.shadow_rays.push(s.ray);
             self.reaches.push(s.reach);
+            self.aimed.push(s.aimed);
         }
-        let (rays, reaches) = (&self.shadow_rays, &self.reaches);
-        tracer
+        let (rays, reaches, aimed) = (&self.shadow_rays, &self.reaches, &self.aimed);
+        // A ray aimed at a part it does not meet finds no light and is not a ray traced.
+        let missed = tracer
             .scene
-            .occluded_all(rays, reaches, &mut self.near, &mut self.blocked);
+            .occluded_all(rays, reaches, aimed, &mut self.near, &mut self.blocked);
+        tracer.rays -= missed as u64;
         let mut start = 0;
         for &(waiting, n) in &self.waiting {
             let range = start..start + n as usize;

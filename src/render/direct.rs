@@ -4,7 +4,7 @@
 
 use super::shadow::Shadow;
 use super::trace::Tracer;
-use crate::float::Float;
+use crate::float::{Float, lit};
 use crate::light::{Emitters, Incident, power_heuristic};
 use crate::material::{Lobes, Material};
 use crate::ray::Ray;
@@ -66,6 +66,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
                 self.shadows.push(Shadow {
                     ray,
                     reach: distance,
+                    aimed: None,
                     light,
                     sampled: false,
                 });
@@ -129,14 +130,23 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
             .flatten()?;
         // The shadow ray stops where the scene's own intersection meets the emitter's part
         // (bit for bit the same `t`): the open interval `(0, t)` leaves the emitter out. A
-        // direction that rounding takes just past the part's edge finds no light.
+        // direction that rounding takes just past the part's edge finds no light. Where
+        // the batch walks a tree, that `t` is left to the walk, which meets the part anyway
+        // (`Scene::occluded_all`); the reach is then a bound a little past the point.
         let ray = Ray::new(origin, dir);
-        let at = object.shape.intersect_part(sample.part, &ray, F::infinity())?;
+        let (reach, aimed) = if self.defer {
+            let past = (sample.point - origin).length() * lit::<F>(1.0 + 1.0 / 256.0);
+            (past, Some((index as u32, sample.part)))
+        } else {
+            let at = object.shape.intersect_part(sample.part, &ray, F::infinity())?;
+            (at.t, None)
+        };
         self.rays += 1;
         let weight = power_heuristic(light_pdf, material.pdf(&hit, wo, dir));
         Some(Shadow {
             ray,
-            reach: at.t,
+            reach,
+            aimed,
             light: f.colour * radiance * (f.scale * weight / light_pdf),
             sampled: true,
         })
@@ -172,6 +182,7 @@ impl<F: Float, S: Layout<F>, M: Material<F>> Tracer<'_, F, S, M> {
         Some(Shadow {
             ray: Ray::new(origin, dir),
             reach: F::infinity(),
+            aimed: None,
             light: f.colour * background.color(dir) * (f.scale * weight / light_pdf),
             sampled: true,
         })

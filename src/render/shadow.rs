@@ -13,8 +13,12 @@ use crate::vec3::Color;
 pub(super) struct Shadow<F> {
     /// The shadow ray.
     pub(super) ray: Ray<F>,
-    /// Where the light is along it.
+    /// Where the light is along it; with `aimed`, a bound past it.
     pub(super) reach: F,
+    /// The emitter's part `(object, part)` the ray is aimed at, where the walk is left to
+    /// find the light's own distance ([`Scene::occluded_all`](crate::Scene)): `None`
+    /// where `reach` is the light's exact distance.
+    pub(super) aimed: Option<(u32, u32)>,
     /// The light that arrives if nothing blocks it.
     pub(super) light: Color<F>,
     /// Whether it is the light sample's (of an emitter or the background), not a delta

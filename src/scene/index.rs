@@ -268,44 +268,82 @@ impl<F: Float> Index<F> {
     /// [`Index::occluded`] of each of `rays` in `(0, reach[i])`, set in `blocked`: the same
     /// answers, the tree walked by the whole batch at once. A ray found blocked stops: its
     /// reach drops to `−∞`, which no box starts within.
+    ///
+    /// A ray `aimed[i]` at a part looks for its nearest hit within `reach[i]` instead. If
+    /// that is the part, nothing is nearer and the ray is clear: the part's own test gave
+    /// the distance the exact reach would be. Otherwise (something nearer, or nothing
+    /// within the bound) the part is asked for that distance, as the shading would have,
+    /// and the answer follows from it; a ray that misses the part is blocked and counted in
+    /// the number returned.
     pub(super) fn occluded_all<S: Layout<F>, M>(
         &self,
         objects: &[Object<S, M>],
         rays: &[Ray<F>],
         reach: &[F],
+        aimed: &[Option<Key>],
         near: &mut Nearests<F>,
         blocked: &mut Vec<bool>,
-    ) {
+    ) -> usize {
         let gone = F::neg_infinity();
-        let Nearests { t, streams, .. } = near;
+        let Nearests { t, found, streams } = near;
         t.clear();
         t.extend_from_slice(reach);
-        let any = |p: Packet<'_, F>, r: usize, t: &mut [F]| {
-            if t[r] != gone && p.any(objects, &rays[r], t[r]) {
+        // Read only where a part was found (`t < reach`).
+        if found.len() < rays.len() {
+            found.resize(rays.len(), Found::none());
+        }
+        let aimed = &aimed[..rays.len()];
+        let test = |p: Packet<'_, F>, r: usize, t: &mut [F], found: &mut [Found<F>]| {
+            if aimed[r].is_some() {
+                p.offer(objects, rays, [r], t, found);
+            } else if t[r] != gone && p.any(objects, &rays[r], t[r]) {
                 t[r] = gone;
             }
         };
-        for r in 0..rays.len() {
-            if self.plain {
-                if plain::any(objects, &rays[r], t[r]) {
-                    t[r] = gone;
+        if !self.plain {
+            for r in 0..rays.len() {
+                for p in &self.looped {
+                    test(p.packet(), r, t, found);
                 }
-                continue;
-            }
-            for p in &self.looped {
-                any(p.packet(), r, t);
             }
         }
         if let Some(bvh) = &self.bvh {
             bvh.traverse_all(rays, t, streams, |k, reached, t| {
                 let leaf = self.leaves.get(k);
                 for &r in reached {
-                    any(leaf, r as usize, t);
+                    test(leaf, r as usize, t, found);
                 }
             });
         }
+        let mut missed = 0;
         blocked.clear();
-        blocked.extend(t.iter().map(|&t| t == gone));
+        blocked.extend((0..rays.len()).map(|r| {
+            let ray = &rays[r];
+            let Some((object, part)) = aimed[r] else {
+                return if self.plain {
+                    plain::any(objects, ray, t[r])
+                } else {
+                    t[r] == gone
+                };
+            };
+            let hit = t[r] < reach[r] && !self.plain;
+            if hit && found[r].key == (object, part) {
+                return false;
+            }
+            let shape = &objects[object as usize].shape;
+            let Some(at) = shape.intersect_part(part, ray, F::infinity()) else {
+                missed += 1;
+                return true;
+            };
+            // The nearest hit is before the part's (nothing is nearer), or nothing was found
+            // within the bound, which may fall short of the part.
+            if hit {
+                t[r] < at.t
+            } else {
+                self.occluded(objects, ray, at.t)
+            }
+        }));
+        missed
     }
 }
 

@@ -222,7 +222,8 @@ fn a_batch_answers_like_single_rays() {
             .map(|i| [1.0, 5.0, 12.0, f64::INFINITY][i % 4])
             .collect();
         let mut blocked = Vec::new();
-        index.occluded_all(&objects, &rays, &reach, &mut near, &mut blocked);
+        let aimed = vec![None; rays.len()];
+        index.occluded_all(&objects, &rays, &reach, &aimed, &mut near, &mut blocked);
         assert_eq!(blocked.len(), rays.len());
         for ((ray, &t_max), &got) in rays.iter().zip(&reach).zip(&blocked) {
             assert_eq!(got, index.occluded(&objects, ray, t_max), "{ray:?} to {t_max}");
@@ -443,3 +444,5 @@ fn cut_triangles_answer_as_the_naive_loop() {
         assert_eq!(hit.map(|(h, o, _)| (h, o.material)), want, "{:?}", rays[i]);
     });
 }
+
+mod aimed;
