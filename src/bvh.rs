@@ -101,6 +101,8 @@ impl<F: Float> Bvh<F> {
         P::Iter: IndexedParallelIterator,
     {
         let items = build::items_par(prims.into_par_iter());
+        // As a trait object the build is compiled once, not once for every caller's closure.
+        let triangle: &dyn Fn(u32) -> Option<[Vec3<F>; 3]> = &triangle;
         Self::from_arrays(build::build(items, Some(triangle)))
     }
 

@@ -11,6 +11,7 @@ pub mod adaptive;
 mod aov;
 mod batch;
 mod direct;
+mod parallel;
 mod progress;
 mod reference;
 mod seed;
@@ -335,12 +336,10 @@ where
         let start = Instant::now();
         let mut image = Image::new(tile.width, tile.height)?;
         let progress = Progress::new(settings.progress, tile.height as u64);
-        let band = BAND_ROWS * tile.width;
-        let rays: u64 = image
-            .pixels_mut()
-            .par_chunks_mut(band)
-            .enumerate()
-            .map_init(Batch::<F, R>::new, |batch, (k, pixels)| {
+        let (band, progress) = (BAND_ROWS * tile.width, &progress);
+        let worker = || -> parallel::Job<'_, (usize, &mut [[f64; 3]])> {
+            let mut batch = Batch::<F, R>::new();
+            Box::new(move |(k, pixels)| {
                 let mut tracer =
                     Tracer::new(self.scene, settings.max_depth).light_sampling(settings.light_sampling);
                 let at = |i: usize| (tile.x + i % tile.width, tile.y + (k * band + i) / tile.width);
@@ -348,7 +347,8 @@ where
                 progress.inc(pixels.len().div_ceil(tile.width) as u64);
                 tracer.rays()
             })
-            .sum();
+        };
+        let rays = parallel::sum(image.pixels_mut().par_chunks_mut(band).enumerate(), &worker);
         progress.finish();
         Ok(Render {
             image,

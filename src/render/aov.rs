@@ -2,7 +2,7 @@
 //! auxiliary images of Intel Open Image Denoise), and the depth of the first hit.
 
 use super::reference::{camera_ray, pixel_stream, sample_rng};
-use super::{Rect, RenderSettings};
+use super::{Rect, RenderSettings, parallel};
 use crate::camera::Camera;
 use crate::float::Float;
 use crate::material::Scatter;
@@ -10,7 +10,6 @@ use crate::ray::Ray;
 use crate::scene::{Layout, Scene};
 use crate::vec3::{Color, Vec3};
 use rand::{Rng, SeedableRng};
-use rayon::prelude::*;
 
 /// Per-pixel features of a render, row by row from the top-left of the rendered region.
 ///
@@ -95,28 +94,26 @@ where
     C: Camera<F> + Sync,
 {
     let count = tile.width * tile.height;
-    let per_pixel: Vec<([f64; 3], [f64; 3], f64, u64)> = (0..count)
-        .into_par_iter()
-        .map(|i| {
-            let (x, y) = (tile.x + i % tile.width, tile.y + i / tile.width);
-            let stream = pixel_stream(settings, camera, x, y);
-            let n = samples(i);
-            let (mut albedo, mut normal, mut depth, mut rays) = ([0.0; 3], [0.0; 3], f64::INFINITY, 0);
-            for sample in 0..n {
-                let mut rng: R = sample_rng(stream, sample);
-                let ray = camera_ray(camera, x, y, jitter, &mut rng);
-                let f = feature(scene, ray, settings.max_depth, &mut rng);
-                for k in 0..3 {
-                    albedo[k] += f.albedo[k];
-                    normal[k] += f.normal[k];
-                }
-                depth = depth.min(f.depth);
-                rays += f.rays;
+    let pixel = |i: usize| {
+        let (x, y) = (tile.x + i % tile.width, tile.y + i / tile.width);
+        let stream = pixel_stream(settings, camera, x, y);
+        let n = samples(i);
+        let (mut albedo, mut normal, mut depth, mut rays) = ([0.0; 3], [0.0; 3], f64::INFINITY, 0);
+        for sample in 0..n {
+            let mut rng: R = sample_rng(stream, sample);
+            let ray = camera_ray(camera, x, y, jitter, &mut rng);
+            let f = feature(scene, ray, settings.max_depth, &mut rng);
+            for k in 0..3 {
+                albedo[k] += f.albedo[k];
+                normal[k] += f.normal[k];
             }
-            let n = f64::from(n.max(1));
-            (albedo.map(|a| a / n), normal.map(|v| v / n), depth, rays)
-        })
-        .collect();
+            depth = depth.min(f.depth);
+            rays += f.rays;
+        }
+        let n = f64::from(n.max(1));
+        (albedo.map(|a| a / n), normal.map(|v| v / n), depth, rays)
+    };
+    let per_pixel = parallel::each(count, &pixel);
     let rays = per_pixel.iter().map(|p| p.3).sum();
     let aovs = Aovs {
         width: tile.width,

@@ -105,9 +105,11 @@ impl<F: Float> Index<F> {
             return index;
         }
         let class = |k: &Key| kind(&shape(k).primitive(k.1));
-        let prims = tree_keys
-            .par_iter()
-            .map(|k| (bounds(k).unwrap_or(whole), class(k)));
+        // Through a trait object, so that the build's parallel collection is compiled once,
+        // not once for every shape type.
+        let prim = |i: usize| (bounds(&tree_keys[i]).unwrap_or(whole), class(&tree_keys[i]));
+        let prim: &(dyn Fn(usize) -> (Aabb<F>, u8) + Sync) = &prim;
+        let prims = (0..tree_keys.len()).into_par_iter().map(prim);
         let bvh = match quality {
             BvhQuality::Medium => Bvh::build_classes(prims),
             BvhQuality::High => Bvh::build_split(prims, |i| {

@@ -11,12 +11,12 @@ use crate::float::Float;
 use crate::image::Image;
 use crate::material::Scatter;
 use crate::render::batch::Batch;
+use crate::render::parallel;
 use crate::render::progress::{Progress, Round};
 use crate::render::reference::{mean, pixel_stream};
 use crate::render::{Render, RenderStats, Renderer, Tracer};
 use crate::scene::Layout;
 use rand::{Rng, SeedableRng};
-use rayon::prelude::*;
 use std::time::{Duration, Instant};
 
 /// About the most samples of one round handed to a worker as one task: the task traces,
@@ -65,10 +65,8 @@ where
         let out_of_time = || rounds > 0 && deadline.is_some_and(|d| Instant::now() >= d);
         rays += trace_round(renderer, &mut pixels, &next, &out_of_time);
         rounds += 1;
-        let estimates: Vec<Estimate> = pixels
-            .par_iter()
-            .map(|p| p.estimate(adaptive.error_floor, adaptive.estimate))
-            .collect();
+        let estimate = |i: usize| pixels[i].estimate(adaptive.error_floor, adaptive.estimate);
+        let estimates: Vec<Estimate> = parallel::each(pixels.len(), &estimate);
         let errors: Vec<f64> = estimates.iter().map(|e| e.error).collect();
         match deadline {
             Some(deadline) => plan_for_time(
@@ -154,31 +152,29 @@ where
         (rest, first) = (tail, first + len);
     }
     let (settings, camera, tile) = (&renderer.settings, renderer.camera, renderer.region());
-    tasks
-        .into_par_iter()
-        .map_init(
-            || (Batch::<F, R>::new(), Work::default()),
-            |(batch, work), (first, stats)| {
-                let mut tracer =
-                    Tracer::new(renderer.scene, settings.max_depth).light_sampling(settings.light_sampling);
-                let wanted = &next[first..first + stats.len()];
-                let (mut i, mut listed) = (0, 0);
-                while i < stats.len() && !stop() {
-                    let pixel = |k: usize| {
-                        let k = first + k;
-                        let (x, y) = (tile.x + k % tile.width, tile.y + k / tile.width);
-                        (x, y, pixel_stream(settings, camera, x, y))
-                    };
-                    (i, listed) = work.list((i, listed), stats, wanted, pixel);
-                    let (colours, bounces) = batch.trace_samples(&mut tracer, camera, &work.samples);
-                    for ((&owner, &c), &b) in work.owners.iter().zip(colours).zip(bounces) {
-                        stats[owner].add(c, b);
-                    }
+    let worker = || -> parallel::Job<'_, (usize, &mut [PixelStats<F>])> {
+        let (mut batch, mut work) = (Batch::<F, R>::new(), Work::default());
+        Box::new(move |(first, stats)| {
+            let mut tracer =
+                Tracer::new(renderer.scene, settings.max_depth).light_sampling(settings.light_sampling);
+            let wanted = &next[first..first + stats.len()];
+            let (mut i, mut listed) = (0, 0);
+            while i < stats.len() && !stop() {
+                let pixel = |k: usize| {
+                    let k = first + k;
+                    let (x, y) = (tile.x + k % tile.width, tile.y + k / tile.width);
+                    (x, y, pixel_stream(settings, camera, x, y))
+                };
+                (i, listed) = work.list((i, listed), stats, wanted, pixel);
+                let (colours, bounces) = batch.trace_samples(&mut tracer, camera, &work.samples);
+                for ((&owner, &c), &b) in work.owners.iter().zip(colours).zip(bounces) {
+                    stats[owner].add(c, b);
                 }
-                tracer.rays()
-            },
-        )
-        .sum()
+            }
+            tracer.rays()
+        })
+    };
+    parallel::sum(tasks, &worker)
 }
 
 /// A task's batch: the samples to trace, `(x, y, stream, sample)`, and the pixel of the

@@ -19,6 +19,9 @@ pub(in crate::scene::index) fn kind<F>(primitive: &Primitive<F>) -> u8 {
     }
 }
 
+/// A worker's buffers for packing leaves: its packer, and the keys of the leaf at hand.
+type Buffers<F> = (Packer<F>, Vec<Key>);
+
 /// Packs parts into packets, with buffers kept from call to call.
 pub(in crate::scene::index) struct Packer<F> {
     spheres: Vec<(Key, Sphere<F>)>,
@@ -91,11 +94,7 @@ impl<F: Float> Packets<F> {
         S: Layout<F>,
         M: Sync,
     {
-        assert!(self.len() == 0, "a BVH's leaves are packed into no other packets");
-        let start = [0, counts[0], counts[0] + counts[1]];
-        let range = |c: usize| start[c]..start[c] + counts[c];
-        let init = || (Packer::new(), Vec::new());
-        let sorted = |(packer, keys): &mut (Packer<F>, Vec<Key>), k: usize| {
+        let sorted = |(packer, keys): &mut Buffers<F>, k: usize| {
             leaf(k, keys);
             packer.sort(keys, objects);
             let kinds = [packer.spheres.len(), packer.triangles.len(), packer.others.len()];
@@ -104,6 +103,17 @@ impl<F: Float> Packets<F> {
                 "a leaf is one packet"
             );
         };
+        self.pack_sorted(counts, &sorted);
+    }
+
+    /// [`Packets::pack_leaves`]' parallel loops, `sorted(buffers, k)` sorting leaf `k`'s
+    /// parts into the buffers' packer. Apart, with the leaves' work as a trait object, they
+    /// are compiled once, not once for every shape type.
+    fn pack_sorted(&mut self, counts: [usize; 3], sorted: &(dyn Fn(&mut Buffers<F>, usize) + Sync)) {
+        assert!(self.len() == 0, "a BVH's leaves are packed into no other packets");
+        let start = [0, counts[0], counts[0] + counts[1]];
+        let range = |c: usize| start[c]..start[c] + counts[c];
+        let init = || (Packer::new(), Vec::new());
         self.spheres
             .par_extend(range(0).into_par_iter().map_init(init, |buffers, k| {
                 sorted(buffers, k);
