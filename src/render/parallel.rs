@@ -2,15 +2,15 @@
 //!
 //! A closure carries every type parameter of the function it is written in, so a rayon loop
 //! written inside the generic render is compiled again, with all of rayon's splitting and
-//! joining, for every scalar, shape, material, camera and generator it renders with: 29 % of
-//! the test crate's code was that machinery. These loops take their work as trait objects
-//! instead. Rayon is compiled once (once per scalar where the items hold one), and the work,
+//! joining, for every scalar, shape, material, camera and generator it renders with (the
+//! figures: `docs/PERFORMANCE.md`, "What the test build compiles"). These loops take their
+//! work as trait objects instead. Rayon is compiled once (once per scalar where the items hold one), and the work,
 //! called once a band, a task or a pixel, stays monomorphic inside its closure.
 
 use rayon::prelude::*;
 
-/// A worker's job: it does one item of a loop and returns the rays it traced. Each worker
-/// thread makes its own ([`sum`]), so it keeps its buffers from item to item.
+/// A worker's job: it does one item of a loop and returns the rays it traced. Each piece of
+/// work rayon splits off makes its own ([`sum`]) and keeps its buffers from item to item.
 pub(super) type Job<'a, T> = Box<dyn FnMut(T) -> u64 + 'a>;
 
 /// Does `job(item)` for each of `items` in parallel, each worker's job made by `worker()`,
