@@ -35,7 +35,8 @@ use crate::scene::Nearests;
 use crate::vec3::Color;
 use rand::{Rng, SeedableRng};
 
-/// A bounce a path went on from: what combines with the colour the next ray brings back.
+/// A bounce a path went on from: what combines with the colour the next ray brings back,
+/// and what that ray travels with.
 #[derive(Clone, Copy)]
 struct Bounce<F> {
     /// The path's pixel, in the band.
@@ -44,6 +45,20 @@ struct Bounce<F> {
     direct: Color<F>,
     /// The sample's weight.
     weight: Color<F>,
+    /// How the next ray left the bounce.
+    arrival: Arrival<F>,
+}
+
+impl<F: Float> Bounce<F> {
+    /// Where a camera ray starts: pixel `pixel`'s path, nothing to add yet.
+    fn camera(pixel: u32) -> Self {
+        Self {
+            pixel,
+            direct: Color::zero(),
+            weight: Color::zero(),
+            arrival: Arrival::Unweighted,
+        }
+    }
 }
 
 /// Where the light of a bounce's waiting shadow rays goes once they are traced.
@@ -63,16 +78,12 @@ pub(super) struct Batch<F, R> {
     pixels_at: Vec<(usize, usize, u64)>,
     /// Each pixel's sum of sample colours.
     sums: Vec<Color<F>>,
-    /// The rays still travelling, the pixel of each one's path, and how each left its
-    /// last vertex.
+    /// The rays still travelling; ray `i` of depth `d` left `logs[d][i]`.
     rays: Vec<Ray<F>>,
-    pixels: Vec<u32>,
-    arrivals: Vec<Arrival<F>>,
     next_rays: Vec<Ray<F>>,
-    next_pixels: Vec<u32>,
-    next_arrivals: Vec<Arrival<F>>,
     near: Nearests<F>,
-    /// For each bounce, the paths that went on from it, in the rays' order.
+    /// Where each travelling ray came from: `logs[0]` the camera's, one entry a path (its
+    /// pixel), and `logs[d + 1]` the bounces at depth `d` that went on, in the rays' order.
     logs: Vec<Vec<Bounce<F>>>,
     /// Each path's colour where it ended (background, black, or its last direct light).
     ends: Vec<Color<F>>,
@@ -85,7 +96,7 @@ pub(super) struct Batch<F, R> {
     reaches: Vec<F>,
     aimed: Vec<Option<(u32, u32)>>,
     blocked: Vec<bool>,
-    /// The bounces the last trace took (the logs beyond are stale).
+    /// The bounces the last trace took (the logs beyond `logs[depth]` are stale).
     depth: usize,
     /// For [`Batch::trace_samples`] only: each path's bounces.
     bounces: Vec<u32>,
@@ -99,11 +110,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             pixels_at: Vec::new(),
             sums: Vec::new(),
             rays: Vec::new(),
-            pixels: Vec::new(),
-            arrivals: Vec::new(),
             next_rays: Vec::new(),
-            next_pixels: Vec::new(),
-            next_arrivals: Vec::new(),
             near: Nearests::default(),
             logs: Vec::new(),
             ends: Vec::new(),
@@ -150,13 +157,9 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
                 .map(|&(_, _, stream)| sample_rng(stream, sample));
             self.rngs.extend(seeded);
             self.rays.clear();
-            self.pixels.clear();
-            for (i, (&(x, y, _), rng)) in self.pixels_at.iter().zip(&mut self.rngs).enumerate() {
-                self.rays.push(camera_ray(camera, x, y, spp > 1, rng));
-                self.pixels.push(i as u32);
-            }
-            self.arrivals.clear();
-            self.arrivals.resize(self.rays.len(), Arrival::Unweighted);
+            let rays = self.pixels_at.iter().zip(&mut self.rngs);
+            self.rays
+                .extend(rays.map(|(&(x, y, _), rng)| camera_ray(camera, x, y, spp > 1, rng)));
             self.trace(tracer);
             for (sum, &c) in self.sums.iter_mut().zip(&self.ends) {
                 *sum = *sum + c;
@@ -190,17 +193,13 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
                 .map(|&(_, _, stream, sample)| sample_rng(stream, sample)),
         );
         self.rays.clear();
-        self.pixels.clear();
-        for (i, (&(x, y, _, _), rng)) in samples.iter().zip(&mut self.rngs).enumerate() {
-            self.rays.push(camera_ray(camera, x, y, true, rng));
-            self.pixels.push(i as u32);
-        }
-        self.arrivals.clear();
-        self.arrivals.resize(self.rays.len(), Arrival::Unweighted);
+        let rays = samples.iter().zip(&mut self.rngs);
+        self.rays
+            .extend(rays.map(|(&(x, y, _, _), rng)| camera_ray(camera, x, y, true, rng)));
         self.trace(tracer);
         self.bounces.clear();
         self.bounces.resize(samples.len(), 0);
-        for log in &self.logs[..self.depth] {
+        for log in &self.logs[1..=self.depth] {
             for b in log {
                 self.bounces[b.pixel as usize] += 1;
             }
@@ -208,7 +207,8 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         (&self.ends, &self.bounces)
     }
 
-    /// Traces the started paths to their ends and leaves each pixel's colour in `ends`.
+    /// Traces the camera rays `rays` (ray `i` pixel `i`'s) to their paths' ends and leaves
+    /// each pixel's colour in `ends`.
     fn trace<S, M>(&mut self, tracer: &mut Tracer<'_, F, S, M>)
     where
         S: Layout<F>,
@@ -219,30 +219,34 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         let scene = tracer.scene;
         // Where there is a tree, a depth's shadow rays are walked down it together.
         tracer.defer = scene.uses_bvh();
+        if self.logs.is_empty() {
+            self.logs.push(Vec::new());
+        }
+        self.logs[0].clear();
+        self.logs[0].extend((0..self.rays.len() as u32).map(Bounce::camera));
         let mut depth = 0;
         while !self.rays.is_empty() {
-            if self.logs.len() == depth {
+            if self.logs.len() == depth + 1 {
                 self.logs.push(Vec::new());
             }
-            let log = &mut self.logs[depth];
+            let (done, to_come) = self.logs.split_at_mut(depth + 1);
+            let (from, log) = (&done[depth], &mut to_come[0]);
             log.clear();
             tracer.rays += self.rays.len() as u64;
             self.next_rays.clear();
-            self.next_pixels.clear();
-            self.next_arrivals.clear();
             self.waiting.clear();
             self.shadows.clear();
             // Each ray is shaded as soon as its hit is known, in the rays' order. Inlined
             // whatever its size: called, it takes the hit through memory.
-            let (rays, pixels, arrivals) = (&self.rays, &self.pixels, &self.arrivals);
+            let rays = &self.rays;
             scene.hit_all(
                 rays,
                 &mut self.near,
                 #[inline(always)]
                 |i, hit| {
-                    let pixel = pixels[i];
+                    let Bounce { pixel, arrival, .. } = from[i];
                     let rng = &mut self.rngs[pixel as usize];
-                    match tracer.shade(&rays[i], hit, depth as u32, arrivals[i], rng) {
+                    match tracer.shade(&rays[i], hit, depth as u32, arrival, rng) {
                         Step::Done(colour) => self.ends[pixel as usize] = colour,
                         Step::Lit(direct) if tracer.shadows.is_empty() => {
                             self.ends[pixel as usize] = saturate(direct);
@@ -268,25 +272,22 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
                                 pixel,
                                 direct,
                                 weight,
+                                arrival,
                             });
                             self.next_rays.push(ray);
-                            self.next_pixels.push(pixel);
-                            self.next_arrivals.push(arrival);
                         }
                     }
                 },
             );
             self.trace_shadows(tracer, depth);
             std::mem::swap(&mut self.rays, &mut self.next_rays);
-            std::mem::swap(&mut self.pixels, &mut self.next_pixels);
-            std::mem::swap(&mut self.arrivals, &mut self.next_arrivals);
             depth += 1;
         }
         self.depth = depth;
         tracer.defer = false;
         // Each path's bounces fold back from its last: bounce by bounce from the deepest,
         // each entry updating its path's colour.
-        for log in self.logs[..depth].iter().rev() {
+        for log in self.logs[1..=depth].iter().rev() {
             for b in log {
                 let end = &mut self.ends[b.pixel as usize];
                 *end = saturate(b.direct + b.weight * *end);
@@ -306,13 +307,11 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             return;
         }
         self.shadow_rays.clear();
+        self.shadow_rays.extend(self.shadows.iter().map(|s| s.ray));
         self.reaches.clear();
+        self.reaches.extend(self.shadows.iter().map(|s| s.reach));
         self.aimed.clear();
-        for s in &self.shadows {
-            self.shadow_rays.push(s.ray);
-            self.reaches.push(s.reach);
-            self.aimed.push(s.aimed);
-        }
+        self.aimed.extend(self.shadows.iter().map(|s| s.aimed));
         let (rays, reaches, aimed) = (&self.shadow_rays, &self.reaches, &self.aimed);
         // A ray aimed at a part it does not meet finds no light and is not a ray traced.
         let missed = tracer
@@ -327,7 +326,7 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
             let arrived = |direct| arrive(direct, shadows, |i| blocked[i]);
             match waiting {
                 Waiting::Bounce(k) => {
-                    let bounce = &mut self.logs[depth][k as usize];
+                    let bounce = &mut self.logs[depth + 1][k as usize];
                     bounce.direct = arrived(bounce.direct);
                 }
                 Waiting::End(pixel) => {
