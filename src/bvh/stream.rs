@@ -86,13 +86,7 @@ impl<F: Float> Bvh<F> {
             levels,
             stack,
         } = streams;
-        prepared.clear();
-        octants.iter_mut().for_each(Vec::clear);
-        for (i, ray) in rays.iter().enumerate() {
-            let r = SlabRay::new(ray);
-            octants[r.octant()].push(i as u32);
-            prepared.push(r);
-        }
+        prepare(rays, prepared, octants);
         let Child::Node(root) = root else {
             // A tree of one leaf: every ray goes to it.
             for list in octants.iter() {
@@ -117,6 +111,22 @@ impl<F: Float> Bvh<F> {
             }
         }
     }
+}
+
+/// Each ray's [`SlabRay`] in `prepared`, and its index in the list of its direction octant.
+///
+/// One loop (two lost 1 % at 10² spheres); `prepared` filled by `extend`, which checks its
+/// room once, not once a ray. Out of line: inlined, it changed how the shading around the
+/// walk compiles, in scenes that never walk a tree.
+#[inline(never)]
+fn prepare<F: Float>(rays: &[Ray<F>], prepared: &mut Vec<SlabRay<F>>, octants: &mut [Vec<RayIndex>; 8]) {
+    prepared.clear();
+    octants.iter_mut().for_each(Vec::clear);
+    prepared.extend(rays.iter().enumerate().map(|(i, ray)| {
+        let r = SlabRay::new(ray);
+        octants[r.octant()].push(i as u32);
+        r
+    }));
 }
 
 /// One stream's walk down the tree.
