@@ -214,7 +214,8 @@ impl<F: Float, R: Rng + SeedableRng> Batch<F, R> {
         S: Layout<F>,
         M: Scatter<F, R>,
     {
-        self.ends.clear();
+        // Not cleared: every path writes its end once (where it is done or lit), over
+        // whatever the last trace left.
         self.ends.resize(self.rays.len(), Color::zero());
         let scene = tracer.scene;
         // Where there is a tree, a depth's shadow rays are walked down it together.
