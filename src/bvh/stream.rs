@@ -115,9 +115,9 @@ impl<F: Float> Bvh<F> {
 
 /// Each ray's [`SlabRay`] in `prepared`, and its index in the list of its direction octant.
 ///
-/// One loop (two lost 1 % at 10² spheres); `prepared` filled by `extend`, which checks its
-/// room once, not once a ray. Out of line: inlined, it changed how the shading around the
-/// walk compiles, in scenes that never walk a tree.
+/// One loop (two were slower, `docs/PERFORMANCE.md`); `prepared` filled by `extend`, which
+/// checks its room once, not once a ray. Out of line: inlined, it changed how the shading
+/// around the walk compiles, in scenes that never walk a tree.
 #[inline(never)]
 fn prepare<F: Float>(rays: &[Ray<F>], prepared: &mut Vec<SlabRay<F>>, octants: &mut [Vec<RayIndex>; 8]) {
     prepared.clear();
