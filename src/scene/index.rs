@@ -21,8 +21,9 @@ use crate::float::Float;
 use crate::material::Material;
 use crate::ray::Ray;
 use crate::shape::{Coordinates, Hit, Intersection};
+use crate::vec3::Vec3;
 pub(crate) use packet::Found;
-use packet::{Key, Looped, Packer, Packet, Packets, kind};
+use packet::{Key, Looped, NONE, Packer, Packet, Packets, kind};
 use rayon::prelude::*;
 use runs::{run, runs};
 use std::hint::black_box;
@@ -160,7 +161,7 @@ impl<F: Float> Index<F> {
     ) -> Option<HitOn<'a, F, S, M>> {
         if self.plain {
             let (hit, o) = plain::nearest(objects, ray, t_max)?;
-            return Some(Self::record(objects, materials, ray, &hit, o));
+            return Some(self.record(objects, materials, ray, &hit, (o, NONE)));
         }
         let (mut nearest, mut found) = ([t_max], [Found::none()]);
         let rays = std::slice::from_ref(ray);
@@ -179,7 +180,7 @@ impl<F: Float> Index<F> {
         // A part offered at exactly `t_max` may hold the place of nothing found.
         (nearest[0] < t_max).then(|| {
             let hit = found[0].intersection(nearest[0]);
-            Self::record(objects, materials, ray, &hit, found[0].key.0)
+            self.record(objects, materials, ray, &hit, (found[0].key.0, found[0].lane))
         })
     }
 
@@ -206,7 +207,7 @@ impl<F: Float> Index<F> {
         if self.plain {
             for (i, ray) in rays.iter().enumerate() {
                 if let Some((hit, o)) = plain::nearest(objects, ray, F::infinity()) {
-                    found[i].offer_part(&mut t[i], hit.t, (o, hit.part), hit.part, || hit.coords);
+                    found[i].offer_part(&mut t[i], hit.t, (o, hit.part), hit.part, NONE, || hit.coords);
                 }
             }
         }
@@ -228,30 +229,33 @@ impl<F: Float> Index<F> {
         }
         for (i, ray) in rays.iter().enumerate() {
             let hit = (t[i] < F::infinity()).then(|| {
-                Self::record(
+                self.record(
                     objects,
                     materials,
                     ray,
                     &found[i].intersection(t[i]),
-                    found[i].key.0,
+                    (found[i].key.0, found[i].lane),
                 )
             });
             each(i, hit);
         }
     }
 
-    /// The record of the intersection `hit` with object `o`, the object and its material.
+    /// The record of the intersection `hit` with object `o`, found in the lanes at `lane`
+    /// ([`Found::lane`]), the object and its material.
     #[inline(always)]
     fn record<'a, S: Layout<F>, M: Material<F>>(
+        &self,
         objects: &'a [Object<S>],
         materials: &'a [M],
         ray: &Ray<F>,
         hit: &Intersection<F>,
-        o: u32,
+        (o, lane): (u32, u32),
     ) -> HitOn<'a, F, S, M> {
         let object = &objects[o as usize];
         let material = &materials[object.material.index()];
-        (record(object, material, ray, hit), object, material)
+        let vertices = || self.leaves.triangle(lane);
+        (record(object, material, ray, hit, vertices), object, material)
     }
 
     /// Whether any part blocks the ray in `(0, t_max)`; stops at the first.
@@ -357,8 +361,9 @@ fn record<F: Float, S: Layout<F>, M: Material<F>>(
     material: &M,
     ray: &Ray<F>,
     hit: &Intersection<F>,
+    vertices: impl FnOnce() -> Option<[Vec3<F>; 3]>,
 ) -> Hit<F> {
-    let record = object.shape.finish(ray, hit);
+    let record = object.shape.finish_with(ray, hit, vertices);
     if material.reads_coordinates() {
         record.with(coordinates(&object.shape, ray, hit))
     } else {

@@ -1,7 +1,8 @@
 //! Which parts of a scene's shapes the scene may test four at a time.
 
 use crate::float::Float;
-use crate::shape::{Disk, Hittable, Mesh, Plane, ShapeKind, Sphere, Triangle};
+use crate::ray::Ray;
+use crate::shape::{Disk, Hit, Hittable, Intersection, Mesh, Plane, ShapeKind, Sphere, Triangle};
 use crate::vec3::Vec3;
 
 /// What a part of a shape is, as far as a scene's index can use it.
@@ -38,9 +39,43 @@ pub trait Layout<F: Float>: Hittable<F> + Sync {
         let _ = part;
         Primitive::Other
     }
+
+    /// [`Hittable::finish`] of `hit`, where `vertices()` gives the part's vertices as
+    /// [`Layout::primitive`] describes them if the part is a [`Primitive::Triangle`] the
+    /// scene has at hand: the same record, made from vertices the ray's test has just read
+    /// rather than from the shape's own store, which it has not. The default asks
+    /// [`Hittable::finish`].
+    #[inline(always)]
+    fn finish_with(
+        &self,
+        ray: &Ray<F>,
+        hit: &Intersection<F>,
+        vertices: impl FnOnce() -> Option<[Vec3<F>; 3]>,
+    ) -> Hit<F> {
+        let _ = vertices;
+        self.finish(ray, hit)
+    }
 }
 
 impl<F: Float> Layout<F> for ShapeKind<F> {
+    #[inline(always)]
+    fn finish_with(
+        &self,
+        ray: &Ray<F>,
+        hit: &Intersection<F>,
+        vertices: impl FnOnce() -> Option<[Vec3<F>; 3]>,
+    ) -> Hit<F> {
+        // One match: the other arms as `Hittable::finish` has them.
+        match self {
+            Self::Mesh(m) => m.finish_with(ray, hit, vertices),
+            Self::Sphere(s) => s.finish(ray, hit),
+            Self::Plane(p) => p.finish(ray, hit),
+            Self::Triangle(t) => t.finish(ray, hit),
+            Self::Disk(d) => d.finish(ray, hit),
+            Self::Instance(i) => i.finish(ray, hit),
+        }
+    }
+
     #[inline]
     fn primitive(&self, part: u32) -> Primitive<F> {
         match self {
@@ -73,6 +108,17 @@ impl<F: Float> Layout<F> for Mesh<F> {
     #[inline]
     fn primitive(&self, part: u32) -> Primitive<F> {
         Primitive::Triangle(self.triangle(part))
+    }
+
+    #[inline(always)]
+    fn finish_with(
+        &self,
+        ray: &Ray<F>,
+        hit: &Intersection<F>,
+        vertices: impl FnOnce() -> Option<[Vec3<F>; 3]>,
+    ) -> Hit<F> {
+        let v = vertices().unwrap_or_else(|| self.triangle(hit.part));
+        self.finish_vertices(ray, hit, &v)
     }
 }
 

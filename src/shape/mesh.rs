@@ -204,6 +204,13 @@ impl<F: Float> Mesh<F> {
         self.normals.as_ref().map(|n| index.map(|i| n[i as usize]))
     }
 
+    /// [`Hittable::finish`] of `hit` on its triangle, whose vertices are `v`.
+    #[inline(always)]
+    pub(crate) fn finish_vertices(&self, ray: &Ray<F>, hit: &Intersection<F>, v: &[Vec3<F>; 3]) -> Hit<F> {
+        let normals = self.corner_normals(hit.part);
+        record(v, checked_normal(*v), ray, hit.t, hit.coords, normals)
+    }
+
     /// The vertex positions.
     pub fn vertices(&self) -> &[Vec3<F>] {
         &self.vertices
@@ -291,9 +298,7 @@ impl<F: Float> Hittable<F> for Mesh<F> {
     // every shape's record (a sphere's too) in memory.
     #[inline(always)]
     fn finish(&self, ray: &Ray<F>, hit: &Intersection<F>) -> Hit<F> {
-        let v = self.triangle(hit.part);
-        let normals = self.corner_normals(hit.part);
-        record(&v, checked_normal(v), ray, hit.t, hit.coords, normals)
+        self.finish_vertices(ray, hit, &self.triangle(hit.part))
     }
 
     /// As a [`Triangle`](super::Triangle)'s, from the corners' texture coordinates if the

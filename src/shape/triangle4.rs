@@ -58,6 +58,13 @@ impl<F: Float> Triangle4<F> {
         p
     }
 
+    /// Lane `lane`'s vertices `[A, B, C]`, as given.
+    #[inline(always)]
+    pub(crate) fn vertices(&self, lane: usize) -> [Vec3<F>; 3] {
+        self.vertices
+            .map(|v| Vec3::new(v[0].0[lane], v[1].0[lane], v[2].0[lane]))
+    }
+
     /// Whether any lane's triangle is hit at some `t` in `(0, t_max)`.
     #[inline(always)]
     pub fn any(&self, ray: &Ray<F>, t_max: F) -> bool {

@@ -6,6 +6,7 @@ use crate::lanes::{F4, LANES};
 use crate::ray::Ray;
 use crate::scene::layout::Layout;
 use crate::shape::{Hittable, Intersection, Sphere, Sphere4, Triangle4};
+use crate::vec3::Vec3;
 
 mod pack;
 pub(super) use pack::{Packer, kind};
@@ -26,6 +27,10 @@ pub(crate) struct Found<F> {
     /// part, but for a shape that finds its own parts (an instance's triangle).
     pub(super) part: u32,
     pub(super) coords: [F; 3],
+    /// Where the part's lanes are: `4k + lane` in leaf packet `k`, or [`NONE`] (a packet of
+    /// the loop, or a part tested alone). A triangle's record is made from its packet's
+    /// vertices, which the ray has just read, not from its mesh's, which it has not.
+    pub(super) lane: u32,
 }
 
 impl<F: Float> Found<F> {
@@ -35,6 +40,7 @@ impl<F: Float> Found<F> {
             key: (NONE, 0),
             part: 0,
             coords: [F::zero(); 3],
+            lane: NONE,
         }
     }
 
@@ -53,10 +59,11 @@ impl<F: Float> Found<F> {
     /// offered in, the nearest ends the same: the answer of a loop over all the parts.
     #[inline(always)]
     pub(super) fn offer(&mut self, nearest: &mut F, t: F, key: Key, coords: impl FnOnce() -> [F; 3]) {
-        self.offer_part(nearest, t, key, key.1, coords);
+        self.offer_part(nearest, t, key, key.1, NONE, coords);
     }
 
-    /// [`Found::offer`] of an intersection whose shape names the part `part` itself.
+    /// [`Found::offer`] of an intersection whose shape names the part `part` itself, from
+    /// the lanes at `lane` ([`Found::lane`]).
     #[inline(always)]
     pub(super) fn offer_part(
         &mut self,
@@ -64,6 +71,7 @@ impl<F: Float> Found<F> {
         t: F,
         key: Key,
         part: u32,
+        lane: u32,
         coords: impl FnOnce() -> [F; 3],
     ) {
         if t < *nearest || (t == *nearest && key < self.key) {
@@ -72,9 +80,15 @@ impl<F: Float> Found<F> {
                 key,
                 part,
                 coords: coords(),
+                lane,
             };
         }
     }
+}
+
+/// [`Packet::first_lane`] of leaf packet `k` (no leaf count reaches `2³⁰`).
+fn first_lane(k: usize) -> u32 {
+    (k * LANES) as u32
 }
 
 /// Up to four parts of one kind, tested together; lanes hold parts in [`Key`] order and
@@ -83,6 +97,8 @@ impl<F: Float> Found<F> {
 pub(super) struct Packet<'a, F> {
     lanes: Lanes<'a, F>,
     keys: &'a [Key; LANES],
+    /// `4k` for leaf packet `k`, [`NONE`] for a packet of the loop ([`Found::lane`]).
+    first_lane: u32,
 }
 
 /// A packet's parts, as they are tested.
@@ -147,19 +163,35 @@ impl<F: Float> Packets<F> {
                 Spheres::Four(s) => Lanes::Spheres(s),
                 Spheres::One(s) => Lanes::Sphere(s),
             };
-            return Packet { lanes, keys: &p.keys };
+            return Packet {
+                lanes,
+                keys: &p.keys,
+                first_lane: first_lane(k),
+            };
         }
+        let first = first_lane(k);
         let k = k - self.spheres.len();
         if let Some(p) = self.triangles.get(k) {
             return Packet {
                 lanes: Lanes::Triangles(&p.lanes),
                 keys: &p.keys,
+                first_lane: first,
             };
         }
         Packet {
             lanes: Lanes::Others,
             keys: &self.others[k - self.triangles.len()],
+            first_lane: first,
         }
+    }
+
+    /// The vertices of the triangle at `lane` ([`Found::lane`]), if a packet of
+    /// triangles holds it.
+    #[inline(always)]
+    pub(super) fn triangle(&self, lane: u32) -> Option<[Vec3<F>; 3]> {
+        let k = (lane / LANES as u32) as usize;
+        let p = self.triangles.get(k.wrapping_sub(self.spheres.len()))?;
+        Some(p.lanes.vertices(lane as usize % LANES))
     }
 
     /// Every packet, in order.
@@ -188,7 +220,8 @@ impl<F: Float> Packet<'_, F> {
             Lanes::Spheres(s) => {
                 for r in which {
                     let t = s.hits(&rays[r]);
-                    self.offer_lanes(t, |_| [F::zero(); 3], &mut nearest[r], &mut found[r]);
+                    // Not `first_lane`: a sphere's record is its object's.
+                    self.offer_lanes(t, NONE, |_| [F::zero(); 3], &mut nearest[r], &mut found[r]);
                 }
             }
             Lanes::Sphere(s) => {
@@ -201,7 +234,8 @@ impl<F: Float> Packet<'_, F> {
             Lanes::Triangles(tri) => {
                 for r in which {
                     let hits = tri.hits_within(&rays[r], nearest[r]);
-                    self.offer_lanes(hits.t, |lane| hits.coords(lane), &mut nearest[r], &mut found[r]);
+                    let (first, coords) = (self.first_lane, |lane| hits.coords(lane));
+                    self.offer_lanes(hits.t, first, coords, &mut nearest[r], &mut found[r]);
                 }
             }
             Lanes::Others => {
@@ -209,7 +243,8 @@ impl<F: Float> Packet<'_, F> {
                     for &(object, part) in self.keys.iter().take_while(|k| k.0 != NONE) {
                         let shape = &objects[object as usize].shape;
                         if let Some(i) = shape.intersect_part(part, &rays[r], F::infinity()) {
-                            found[r].offer_part(&mut nearest[r], i.t, (object, part), i.part, || i.coords);
+                            found[r]
+                                .offer_part(&mut nearest[r], i.t, (object, part), i.part, NONE, || i.coords);
                         }
                     }
                 }
@@ -217,15 +252,24 @@ impl<F: Float> Packet<'_, F> {
         }
     }
 
-    /// Offers the nearest lane of `t` (`+∞` for a miss); of equally near lanes the first,
-    /// whose part comes first.
+    /// Offers the nearest lane of `t` (`+∞` for a miss), found at `first + lane` (or
+    /// [`NONE`]: [`Found::lane`]); of equally near lanes the first, whose part comes first.
     #[inline(always)]
-    fn offer_lanes(&self, t: F4<F>, coords: impl Fn(usize) -> [F; 3], nearest: &mut F, found: &mut Found<F>) {
+    fn offer_lanes(
+        &self,
+        t: F4<F>,
+        first: u32,
+        coords: impl Fn(usize) -> [F; 3],
+        nearest: &mut F,
+        found: &mut Found<F>,
+    ) {
         let min = t.min_lane();
         // Most packets hold nothing nearer: one comparison before a lane is looked up.
         if min < F::infinity() && min <= *nearest {
             let lane = t.mask_eq(min).trailing_zeros() as usize;
-            found.offer(nearest, min, self.keys[lane], || coords(lane));
+            let key = self.keys[lane];
+            let at = first.saturating_add(lane as u32);
+            found.offer_part(nearest, min, key, key.1, at, || coords(lane));
         }
     }
 
@@ -301,6 +345,7 @@ impl<F: Float> Looped<F> {
         Packet {
             lanes,
             keys: &self.keys,
+            first_lane: NONE,
         }
     }
 }

@@ -217,6 +217,16 @@ fn a_batch_answers_like_single_rays() {
             hits += usize::from(want.is_some());
         }
         assert!(hits > rays.len() / 2, "most rays should hit something ({hits})");
+        // A smaller batch after it, in buffers kept from the larger one, answers the same.
+        let (fewer, mut again) = (&rays[rays.len() / 3..rays.len() / 2], Vec::new());
+        index.hit_all(&objects, &tags, fewer, &mut near, |_, hit| again.push(hit));
+        let same = |h: Option<HitOn<'_, f64, ShapeKind<f64>, Tag>>| h.map(|(h, o, _)| (h, o.material));
+        assert!(
+            again
+                .into_iter()
+                .map(same)
+                .eq(out[rays.len() / 3..rays.len() / 2].iter().map(|&h| same(h)))
+        );
         // Occlusion of the whole batch, each ray to its own reach.
         let reach: Vec<f64> = (0..rays.len())
             .map(|i| [1.0, 5.0, 12.0, f64::INFINITY][i % 4])
