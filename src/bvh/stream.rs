@@ -37,8 +37,9 @@ pub(crate) type RayIndex = u32;
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Streams<F> {
     prepared: Vec<SlabRay<F>>,
-    /// The rays of each direction octant.
+    /// The rays of each direction octant: the first `counts[o]` of `octants[o]`.
     octants: [Vec<RayIndex>; 8],
+    counts: [usize; 8],
     /// One for each level of the tree.
     levels: Vec<Level>,
     /// The stack of a ray searching a subtree alone.
@@ -83,13 +84,15 @@ impl<F: Float> Bvh<F> {
         let Streams {
             prepared,
             octants,
+            counts,
             levels,
             stack,
         } = streams;
-        prepare(rays, prepared, octants);
+        prepare(rays, prepared, octants, counts);
+        let lists = || octants.iter().zip(*counts).map(|(list, n)| &list[..n]);
         let Child::Node(root) = root else {
             // A tree of one leaf: every ray goes to it.
-            for list in octants.iter() {
+            for list in lists() {
                 if !list.is_empty() {
                     leaf(0, list, t_max);
                 }
@@ -105,7 +108,7 @@ impl<F: Float> Bvh<F> {
             t_max,
             leaf: &mut leaf,
         };
-        for (octant, list) in octants.iter().enumerate() {
+        for (octant, list) in lists().enumerate() {
             if !list.is_empty() {
                 walk.node(root, list, octant, levels);
             }
@@ -113,18 +116,32 @@ impl<F: Float> Bvh<F> {
     }
 }
 
-/// Each ray's [`SlabRay`] in `prepared`, and its index in the list of its direction octant.
+/// Each ray's [`SlabRay`] in `prepared`, and its index in the list of its direction octant
+/// (the first `counts[o]` of `octants[o]`).
 ///
 /// One loop (two were slower, `docs/PERFORMANCE.md`); `prepared` filled by `extend`, which
-/// checks its room once, not once a ray. Out of line: inlined, it changed how the shading
-/// around the walk compiles, in scenes that never walk a tree.
+/// checks its room once, not once a ray. The lists are written by index into arrays that
+/// only grow: a `push` that may reallocate is a call in the loop, and the loop's values
+/// then went through the stack, at a cost that changed with the caller's stack alignment.
+/// Out of line: inlined, it changed how the shading around the walk compiles, in scenes
+/// that never walk a tree.
 #[inline(never)]
-fn prepare<F: Float>(rays: &[Ray<F>], prepared: &mut Vec<SlabRay<F>>, octants: &mut [Vec<RayIndex>; 8]) {
+fn prepare<F: Float>(
+    rays: &[Ray<F>],
+    prepared: &mut Vec<SlabRay<F>>,
+    octants: &mut [Vec<RayIndex>; 8],
+    counts: &mut [usize; 8],
+) {
     prepared.clear();
-    octants.iter_mut().for_each(Vec::clear);
+    for list in octants.iter_mut().filter(|list| list.len() < rays.len()) {
+        list.resize(rays.len(), 0);
+    }
+    *counts = [0; 8];
     prepared.extend(rays.iter().enumerate().map(|(i, ray)| {
         let r = SlabRay::new(ray);
-        octants[r.octant()].push(i as u32);
+        let o = r.octant();
+        octants[o][counts[o]] = i as u32;
+        counts[o] += 1;
         r
     }));
 }
