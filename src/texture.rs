@@ -13,6 +13,7 @@ mod bitmap;
 mod checkerboard;
 mod image_texture;
 mod load;
+mod rgbe;
 mod uv;
 
 pub use bitmap::{Bitmap, Decode, MAX_TEXTURE_PIXELS, srgb_to_linear};

@@ -94,8 +94,8 @@ impl Bitmap {
         })
     }
 
-    /// Reads the image file at `path`: PNG, JPEG or Radiance HDR through the `image` crate,
-    /// OpenEXR through the `exr` crate, told apart by their contents (not their names).
+    /// Reads the image file at `path`: PNG (the `png` crate), JPEG (`zune-jpeg`), Radiance
+    /// HDR (read here) or OpenEXR (`exr`), told apart by their contents (not their names).
     /// Colour becomes linear RGB as `decode` says; a grey image's value goes into every
     /// channel; an alpha channel is dropped (not multiplied in), as Mitsuba 3's bitmap
     /// texture does. Of an OpenEXR file, the first layer with `R`, `G` and `B` channels is

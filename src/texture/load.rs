@@ -1,15 +1,36 @@
-//! Reading image files into a [`Bitmap`]: PNG, JPEG and Radiance HDR through the `image`
-//! crate, OpenEXR through the `exr` crate. The size is checked from the header, before any
-//! pixel is decoded; every failure is a message about the file, never a panic.
+//! Reading image files into a [`Bitmap`]: PNG through the `png` crate, JPEG through
+//! `zune-jpeg`, Radiance HDR by [`super::rgbe`], OpenEXR through the `exr` crate. The
+//! format is told by the file's first bytes and the size is checked from the header, before
+//! any pixel is decoded; every failure is a message about the file, never a panic.
 
 use super::bitmap::{Bitmap, Decode, MAX_TEXTURE_PIXELS, check_size, srgb_to_linear};
-use ::image::{DynamicImage, ImageDecoder, ImageReader, Limits};
+use super::rgbe;
 use std::fs::File;
-use std::io::{BufRead, BufReader, Cursor, Read, Seek};
+use std::io::{BufRead, BufReader, Cursor, Seek};
 use std::path::Path;
+use zune_core::{colorspace::ColorSpace, options::DecoderOptions};
 
 /// The first four bytes of every OpenEXR file.
 const EXR_MAGIC: [u8; 4] = [0x76, 0x2f, 0x31, 0x01];
+
+/// The formats read, by the bytes each file starts with.
+enum Format {
+    Png,
+    Jpeg,
+    Hdr,
+}
+
+impl Format {
+    /// The format of a file that starts with `magic`, if it is one read here.
+    fn of(magic: &[u8]) -> Option<Self> {
+        match magic {
+            [0x89, b'P', b'N', b'G', ..] => Some(Self::Png),
+            [0xff, 0xd8, 0xff, ..] => Some(Self::Jpeg),
+            [b'#', b'?', ..] => Some(Self::Hdr),
+            _ => None,
+        }
+    }
+}
 
 /// The bitmap of the image file at `path`, or why not (the caller names the file).
 pub(super) fn load(path: &Path, decode: Decode) -> Result<Bitmap, String> {
@@ -23,104 +44,117 @@ pub(super) fn load(path: &Path, decode: Decode) -> Result<Bitmap, String> {
         };
         return Err(format!("cannot read {kind}: an image must be a regular file"));
     }
-    let mut magic = [0u8; 4];
-    let mut file = File::open(path).map_err(|e| format!("cannot open the image: {e}"))?;
-    let n = file
-        .read(&mut magic)
+    let file = File::open(path).map_err(|e| format!("cannot open the image: {e}"))?;
+    let mut reader = BufReader::new(file);
+    let magic = reader
+        .fill_buf()
         .map_err(|e| format!("cannot read the image: {e}"))?;
-    if n == 4 && magic == EXR_MAGIC {
+    if magic.starts_with(&EXR_MAGIC) {
         load_exr(path)
     } else {
-        load_other(path, decode)
+        decode_reader(reader, decode)
     }
 }
 
-/// A PNG, JPEG or Radiance HDR file, its format guessed from its first bytes.
-fn load_other(path: &Path, decode: Decode) -> Result<Bitmap, String> {
-    let file = File::open(path).map_err(|e| format!("cannot open the image: {e}"))?;
-    decode_reader(BufReader::new(file), decode)
-}
-
 /// The bitmap of an encoded image held in memory (a glTF file's embedded PNG or JPEG),
-/// or why not: PNG, JPEG or Radiance HDR, its format guessed from its first bytes.
+/// or why not: PNG, JPEG or Radiance HDR, its format told by its first bytes.
 pub(super) fn decode_bytes(bytes: &[u8], decode: Decode) -> Result<Bitmap, String> {
     decode_reader(Cursor::new(bytes), decode)
 }
 
-/// An image read from `reader`, its format guessed from its first bytes, its size checked
-/// from its header before a pixel is decoded.
-fn decode_reader(reader: impl BufRead + Seek, decode: Decode) -> Result<Bitmap, String> {
-    let mut reader = ImageReader::new(reader)
-        .with_guessed_format()
+/// A PNG, JPEG or Radiance HDR image read from `reader`, its format told by its first
+/// bytes (a buffered reader holds at least four unless the file is shorter).
+fn decode_reader(mut reader: impl BufRead + Seek, decode: Decode) -> Result<Bitmap, String> {
+    let magic = reader
+        .fill_buf()
         .map_err(|e| format!("cannot read the image: {e}"))?;
-    if reader.format().is_none() {
-        return Err(
-            "not an image of a known format: a texture is a PNG, JPEG, Radiance HDR (.hdr) \
-                    or OpenEXR file"
-                .into(),
-        );
-    }
-    // The decoder's own allocation bound, a second guard behind the size check below: the
-    // largest decoded buffer, 16-bit RGBA or f32 RGB, at the largest size.
-    let mut limits = Limits::default();
-    limits.max_alloc = Some(MAX_TEXTURE_PIXELS as u64 * 16);
-    reader.limits(limits);
-    let decoder = reader
-        .into_decoder()
-        .map_err(|e| format!("cannot decode the image: {e}"))?;
-    let (w, h) = decoder.dimensions();
-    check_size(w as usize, h as usize)?;
-    let image = DynamicImage::from_decoder(decoder).map_err(|e| format!("cannot decode the image: {e}"))?;
-    convert(image, decode)
+    let (width, height, pixels) = match Format::of(magic) {
+        Some(Format::Png) => png(reader, decode)?,
+        Some(Format::Jpeg) => jpeg(reader, decode)?,
+        // Float images are linear already (Mitsuba 3 reads HDR and EXR so).
+        Some(Format::Hdr) => rgbe::read(reader)?,
+        None => {
+            return Err(
+                "not an image of a known format: a texture is a PNG, JPEG, Radiance HDR \
+                        (.hdr) or OpenEXR file"
+                    .into(),
+            );
+        }
+    };
+    Bitmap::checked(width, height, pixels)
 }
 
-/// The decoded image as linear `f32` RGB.
-fn convert(image: DynamicImage, decode: Decode) -> Result<Bitmap, String> {
-    let (w, h) = (image.width() as usize, image.height() as usize);
-    let table8 = || table(8, decode);
-    let table16 = || table(16, decode);
-    let grey = |t: &[f32], v: usize| [t[v]; 3];
-    let rgb = |t: &[f32], p: &[u16]| [t[p[0] as usize], t[p[1] as usize], t[p[2] as usize]];
-    let pixels: Vec<[f32; 3]> = match &image {
-        DynamicImage::ImageLuma8(i) => {
-            let t = table8();
-            i.pixels().map(|p| grey(&t, p.0[0] as usize)).collect()
+/// The width, height and linear pixels of an image.
+type Pixels = (usize, usize, Vec<[f32; 3]>);
+
+/// A PNG file: palettes and bit depths below 8 expanded to 8-bit samples, 16-bit kept.
+fn png(reader: impl BufRead + Seek, decode: Decode) -> Result<Pixels, String> {
+    let failed = |e: png::DecodingError| format!("cannot decode the image: {e}");
+    let mut decoder = png::Decoder::new(reader);
+    decoder.set_transformations(png::Transformations::EXPAND);
+    // The decoder's own allocation bound, behind the size check below: the largest decoded
+    // buffer, 16-bit RGBA, at the largest size.
+    decoder.set_limits(png::Limits {
+        bytes: MAX_TEXTURE_PIXELS * 8,
+    });
+    let mut reader = decoder.read_info().map_err(failed)?;
+    let (w, h) = reader.info().size();
+    let (width, height) = (w as usize, h as usize);
+    check_size(width, height)?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or("the image is too large for memory")?;
+    let mut buf = vec![0; size];
+    let frame = reader.next_frame(&mut buf).map_err(failed)?;
+    buf.truncate(frame.buffer_size());
+    let channels = frame.color_type.samples();
+    let pixels = match frame.bit_depth {
+        png::BitDepth::Sixteen => {
+            let samples: Vec<u16> = buf
+                .chunks_exact(2)
+                .map(|b| u16::from_be_bytes([b[0], b[1]]))
+                .collect();
+            linear(&samples, channels, &table(16, decode))
         }
-        DynamicImage::ImageLumaA8(i) => {
-            let t = table8();
-            i.pixels().map(|p| grey(&t, p.0[0] as usize)).collect()
-        }
-        DynamicImage::ImageRgb8(i) => {
-            let t = table8();
-            i.pixels().map(|p| rgb(&t, &p.0.map(u16::from))).collect()
-        }
-        DynamicImage::ImageRgba8(i) => {
-            let t = table8();
-            i.pixels().map(|p| rgb(&t, &p.0.map(u16::from))).collect()
-        }
-        DynamicImage::ImageLuma16(i) => {
-            let t = table16();
-            i.pixels().map(|p| grey(&t, p.0[0] as usize)).collect()
-        }
-        DynamicImage::ImageLumaA16(i) => {
-            let t = table16();
-            i.pixels().map(|p| grey(&t, p.0[0] as usize)).collect()
-        }
-        DynamicImage::ImageRgb16(i) => {
-            let t = table16();
-            i.pixels().map(|p| rgb(&t, &p.0)).collect()
-        }
-        DynamicImage::ImageRgba16(i) => {
-            let t = table16();
-            i.pixels().map(|p| rgb(&t, &p.0)).collect()
-        }
-        // Float images are linear already (Mitsuba 3 reads HDR and EXR so).
-        DynamicImage::ImageRgb32F(i) => i.pixels().map(|p| p.0).collect(),
-        DynamicImage::ImageRgba32F(i) => i.pixels().map(|p| [p.0[0], p.0[1], p.0[2]]).collect(),
-        other => return Err(format!("unsupported pixel format {:?}", other.color())),
+        _ => linear(&buf, channels, &table(8, decode)),
     };
-    drop(image);
-    Bitmap::checked(w, h, pixels)
+    Ok((width, height, pixels))
+}
+
+/// A JPEG file, decoded to 8-bit RGB (a grey image's one channel copied to all three).
+fn jpeg(reader: impl BufRead + Seek, decode: Decode) -> Result<Pixels, String> {
+    let failed = |e: zune_jpeg::errors::DecodeErrors| format!("cannot decode the image: {e}");
+    // The size is bounded by `check_size`, not by the decoder's own default limits.
+    let options = DecoderOptions::default()
+        .set_strict_mode(false)
+        .set_max_width(usize::MAX)
+        .set_max_height(usize::MAX)
+        .jpeg_set_out_colorspace(ColorSpace::RGB);
+    let mut decoder = zune_jpeg::JpegDecoder::new_with_options(reader, options);
+    decoder.decode_headers().map_err(failed)?;
+    let (width, height) = decoder
+        .dimensions()
+        .ok_or("cannot decode the image: no frame header")?;
+    check_size(width, height)?;
+    let samples = decoder.decode().map_err(failed)?;
+    if samples.len() != width * height * 3 {
+        return Err("cannot decode the image: the JPEG decoder gave too few samples".into());
+    }
+    Ok((width, height, linear(&samples, 3, &table(8, decode))))
+}
+
+/// Integer samples, `channels` a pixel (grey, grey and alpha, RGB or RGBA), as linear RGB
+/// through `table`; alpha is dropped, not multiplied in.
+fn linear<T: Copy + Into<usize>>(samples: &[T], channels: usize, table: &[f32]) -> Vec<[f32; 3]> {
+    let t = |v: T| table[v.into()];
+    samples
+        .chunks_exact(channels)
+        .map(|p| match p {
+            [v] | [v, _] => [t(*v); 3],
+            [r, g, b, ..] => [t(*r), t(*g), t(*b)],
+            [] => unreachable!("chunks_exact gives no empty chunk"),
+        })
+        .collect()
 }
 
 /// The linear value of each stored integer of `bits` bits: `q/(2ⁿ − 1)`, sRGB-decoded

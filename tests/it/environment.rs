@@ -277,21 +277,16 @@ fn a_background_becomes_a_light_only_when_asked() {
 /// is missing, not an image or not 2:1 is an error naming it at the map's field.
 #[test]
 fn a_map_reads_from_radiance_hdr_and_openexr_alike() {
-    use image::{ImageBuffer, ImageFormat, Rgb};
     use raytrace::error::{Error, Field};
-    let dir = std::env::temp_dir().join(format!("rt-envmap-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = crate::common::Scratch::new("envmap");
+    let dir = scratch.0.clone();
     let texels = [
         [0.5f32, 1.0, 0.25],
         [2.0, 4.0, 1.0],
         [0.0, 0.0, 0.0],
         [8.0, 0.5, 2.0],
     ];
-    let hdr = dir.join("map.hdr");
-    ImageBuffer::<Rgb<f32>, Vec<f32>>::from_raw(2, 1, texels[..2].iter().flatten().copied().collect())
-        .unwrap()
-        .save_with_format(&hdr, ImageFormat::Hdr)
-        .unwrap();
+    let hdr = scratch.hdr("map.hdr", 2, 1, &texels[..2]);
     let exr = dir.join("map.exr");
     let pixels = texels[..2].iter().map(|t| t.map(f64::from)).collect();
     raytrace::image::write_exr(&exr, &Image::from_pixels(2, 1, pixels).unwrap()).unwrap();
@@ -316,5 +311,4 @@ fn a_map_reads_from_radiance_hdr_and_openexr_alike() {
             other => panic!("{}: {other:?}", bad.display()),
         }
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -2,7 +2,6 @@
 //! and every bad file an `Error::Image` naming it, never a panic.
 
 use crate::common::Scratch;
-use image::{ImageBuffer, ImageFormat, Luma, Rgb, Rgba};
 use rand::{RngExt, SeedableRng};
 use raytrace::texture::{Bitmap, Decode};
 use raytrace::{DefaultRng, Error, Image};
@@ -61,11 +60,15 @@ fn an_8_bit_png_is_srgb_decoded_exactly_from_the_top_row_down() {
 fn a_16_bit_grey_png_fills_every_channel() {
     let dir = Scratch::new("png16");
     let levels: [u16; 4] = [0, 1000, 32768, 65535];
-    let path = dir.path("grey16.png");
-    ImageBuffer::<Luma<u16>, Vec<u16>>::from_raw(2, 2, levels.to_vec())
-        .unwrap()
-        .save_with_format(&path, ImageFormat::Png)
-        .unwrap();
+    let samples: Vec<u8> = levels.iter().flat_map(|q| q.to_be_bytes()).collect();
+    let path = dir.png(
+        "grey16.png",
+        2,
+        2,
+        png::ColorType::Grayscale,
+        png::BitDepth::Sixteen,
+        &samples,
+    );
     let colour = Bitmap::load(&path, Decode::Color).unwrap();
     let raw = Bitmap::load(&path, Decode::Raw).unwrap();
     assert!(colour.is_grey());
@@ -79,11 +82,14 @@ fn a_16_bit_grey_png_fills_every_channel() {
 #[test]
 fn alpha_is_dropped_not_multiplied_in() {
     let dir = Scratch::new("rgba");
-    let path = dir.path("rgba.png");
-    ImageBuffer::<Rgba<u8>, Vec<u8>>::from_raw(1, 1, vec![200, 100, 50, 0])
-        .unwrap()
-        .save_with_format(&path, ImageFormat::Png)
-        .unwrap();
+    let path = dir.png(
+        "rgba.png",
+        1,
+        1,
+        png::ColorType::Rgba,
+        png::BitDepth::Eight,
+        &[200, 100, 50, 0],
+    );
     let b = Bitmap::load(&path, Decode::Raw).unwrap();
     assert_eq!(
         b.pixels()[0],
@@ -94,12 +100,8 @@ fn alpha_is_dropped_not_multiplied_in() {
 #[test]
 fn a_jpeg_is_srgb_decoded() {
     let dir = Scratch::new("jpeg");
-    let path = dir.path("grey.jpg");
     // A flat block of 128 is DC-only and zero after the level shift: exact in JPEG.
-    ImageBuffer::<Rgb<u8>, Vec<u8>>::from_raw(16, 16, vec![128; 16 * 16 * 3])
-        .unwrap()
-        .save_with_format(&path, ImageFormat::Jpeg)
-        .unwrap();
+    let path = dir.jpeg("grey.jpg", 16, 16, &[128; 16 * 16 * 3]);
     let b = Bitmap::load(&path, Decode::Color).unwrap();
     let want = srgb(128.0 / 255.0) as f32;
     assert!(b.pixels().iter().all(|p| *p == [want; 3]), "{:?}", b.pixels()[0]);
@@ -117,11 +119,7 @@ fn float_images_are_linear_whatever_raw_says() {
         [0.0, 0.0, 0.0],
         [8.0, 0.5, 2.0],
     ];
-    let hdr = dir.path("values.hdr");
-    ImageBuffer::<Rgb<f32>, Vec<f32>>::from_raw(2, 2, hdr_values.iter().flatten().copied().collect())
-        .unwrap()
-        .save_with_format(&hdr, ImageFormat::Hdr)
-        .unwrap();
+    let hdr = dir.hdr("values.hdr", 2, 2, &hdr_values);
     for decode in [Decode::Color, Decode::Raw] {
         assert_eq!(
             Bitmap::load(&hdr, decode).unwrap().pixels(),
@@ -221,7 +219,7 @@ fn bad_files_are_errors_naming_the_file() {
         (dir.file("cut.png", &bytes[..bytes.len() / 2]), "cannot decode"),
         (
             dir.file("anim.gif", b"GIF89a\x01\x00\x01\x00\x00\x00\x00;"),
-            "cannot decode",
+            "not an image of a known format",
         ),
         (
             dir.file("garbage.exr", [0x76, 0x2f, 0x31, 0x01, 9, 9, 9, 9]),
@@ -240,15 +238,11 @@ fn bad_files_are_errors_naming_the_file() {
 fn no_damaged_file_makes_the_reader_panic() {
     let dir = Scratch::new("damaged");
     let png = std::fs::read(dir.png8("a.png", 3, 2, &[[9, 200, 77]; 6])).unwrap();
-    let jpeg_path = dir.path("a.jpg");
-    ImageBuffer::<Rgb<u8>, Vec<u8>>::from_fn(8, 8, |x, y| Rgb([x as u8 * 30, y as u8 * 30, 7]))
-        .save_with_format(&jpeg_path, ImageFormat::Jpeg)
-        .unwrap();
-    let hdr_path = dir.path("a.hdr");
-    ImageBuffer::<Rgb<f32>, Vec<f32>>::from_raw(2, 1, vec![0.5, 1.0, 2.0, 3.0, 0.1, 0.0])
-        .unwrap()
-        .save_with_format(&hdr_path, ImageFormat::Hdr)
-        .unwrap();
+    let gradient: Vec<u8> = (0..64)
+        .flat_map(|k| [(k % 8) as u8 * 30, (k / 8) as u8 * 30, 7])
+        .collect();
+    let jpeg_path = dir.jpeg("a.jpg", 8, 8, &gradient);
+    let hdr_path = dir.hdr("a.hdr", 2, 1, &[[0.5, 1.0, 2.0], [3.0, 0.125, 0.0]]);
     let exr_path = dir.path("a.exr");
     raytrace::image::write_exr(&exr_path, &Image::from_pixels(2, 2, vec![[0.25; 3]; 4]).unwrap()).unwrap();
     let originals = [

@@ -2,7 +2,6 @@
 //! and shares its images; every mistake is an error at its key.
 
 use crate::common::Scratch;
-use image::{ImageBuffer, ImageFormat, Rgb};
 use raytrace::scene_file::SceneFile;
 use raytrace::texture::Texture;
 use raytrace::{Error, MaterialKind, ShapeKind};
@@ -24,9 +23,10 @@ fn write_example_files(dir: &Scratch) {
     dir.png8("textures/wood.png", 4, 4, &wood);
     let carving: Vec<[u8; 3]> = (0..4).map(|k| [128 + k as u8 * 20, 128, 240]).collect();
     dir.png8("textures/carving.png", 2, 2, &carving);
-    ImageBuffer::<Rgb<u8>, Vec<u8>>::from_fn(8, 8, |x, y| Rgb([x as u8 * 30, y as u8 * 30, 90]))
-        .save_with_format(dir.path("textures/poster.jpg"), ImageFormat::Jpeg)
-        .unwrap();
+    let poster: Vec<u8> = (0..64)
+        .flat_map(|k| [(k % 8) as u8 * 30, (k / 8) as u8 * 30, 90])
+        .collect();
+    dir.jpeg("textures/poster.jpg", 8, 8, &poster);
     let panel = "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n\
                  vn -0.2 -0.2 1\nvn 0.2 -0.2 1\nvn 0.2 0.2 1\nvn -0.2 0.2 1\n\
                  f 1/1/1 2/2/2 3/3/3 4/4/4\n";
@@ -117,11 +117,7 @@ fn every_texture_mistake_is_reported_at_its_key() {
     dir.file("broken.png", "not a picture");
     let huge = super::files::png_header(20_000, 20_000);
     dir.file("huge.png", huge);
-    let bright = dir.path("bright.hdr");
-    ImageBuffer::<Rgb<f32>, Vec<f32>>::from_raw(1, 1, vec![2.0, 0.5, 0.5])
-        .unwrap()
-        .save_with_format(&bright, ImageFormat::Hdr)
-        .unwrap();
+    dir.hdr("bright.hdr", 1, 1, &[[2.0, 0.5, 0.5]]);
     let named = |file: &str| {
         format!("[textures.wood]\ntype = \"image\"\nfile = \"{file}\"\n{MATTE}albedo = \"wood\"\n")
     };
